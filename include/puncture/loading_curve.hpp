@@ -1,0 +1,81 @@
+#pragma once
+// The displacement-controlled loading curve, from zero depth to puncture, and the puncture point.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "puncture/equilibrium.hpp"
+
+namespace puncture {
+
+struct CurvePoint {
+  double depth_mm = 0.0;
+  double force_n = 0.0;
+  double normalized_force = 0.0;  // F / (2 pi G H A)
+  Stage stage = Stage::Slip;
+  Configuration configuration = Configuration::Unloaded;
+  double part_three_stretch = 1.0;
+  double part_two_length_mm = 0.0;
+  double corner_slope_rad = 0.0;
+  double max_first_invariant = 3.0;
+};
+
+// The stick -> slip switch under displacement control: at the switch depth the held state and
+// the sliding state have different forces; the force jumps from one to the other.
+struct StickSlipSwitch {
+  bool occurs = false;
+  double depth_mm = 0.0;
+  double force_stuck_n = 0.0;    // force just before the switch (membrane held)
+  double force_sliding_n = 0.0;  // force just after (membrane sliding), at the same depth
+};
+
+struct PuncturePrediction {
+  bool found = false;
+  std::string message;  // why not, when not found
+  double force_n = 0.0;
+  double normalized_force = 0.0;
+  double depth_mm = 0.0;
+  Stage stage = Stage::Slip;
+  Configuration configuration = Configuration::Unloaded;
+  double part_three_stretch = 1.0;
+  double crack_reference_radius_mm = 0.0;  // where the largest I1 sits (reference radius)
+  double crack_radius_mm = 0.0;            // ... and its current distance from the axis
+  std::string crack_location;              // in words, e.g. "Part I at the indenter's corner"
+  Equilibrium state;                       // the full state at puncture
+};
+
+struct CurveOptions {
+  int points = 200;             // depth points from zero to puncture (or to max_depth_mm)
+  double max_depth_mm = 0.0;    // stop here instead of at puncture when > 0
+  std::function<void(int done, int total)> progress;  // called after each point, if set
+};
+
+struct LoadingCurve {
+  Status status = Status::NoConvergence;
+  std::string message;
+  std::vector<CurvePoint> points;
+  StickSlipSwitch stick_slip;
+  std::optional<double> part_two_onset_depth_mm;  // where Part II appears in the slip stage
+  std::optional<double> part_two_onset_force_n;
+  PuncturePrediction puncture;
+  bool ok() const { return status == Status::Converged; }
+};
+
+// Stage the membrane is in at a given depth, per the problem's stick criterion.
+struct StageBoundary {
+  Status status = Status::Converged;
+  std::string message;
+  bool switches = false;       // false: the membrane stays in its first stage
+  Stage first_stage = Stage::Slip;
+  double depth_mm = 0.0;       // switch depth when it switches
+  double force_stuck_n = 0.0;
+};
+StageBoundary stick_slip_boundary(const Problem& problem, const SolverOptions& options = {});
+
+PuncturePrediction predict_puncture(const Problem& problem, const SolverOptions& options = {});
+
+LoadingCurve loading_curve(const Problem& problem, const CurveOptions& curve = {},
+                           const SolverOptions& options = {});
+
+}  // namespace puncture

@@ -1,0 +1,41 @@
+#pragma once
+// The membrane's material: a shear modulus and a strain-energy law chosen at run time.
+// Adding a law: write a struct like materials/gent.hpp (name(), max_i1(), derivatives()) and add
+// it to MaterialLaw below.
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "puncture/materials/gent.hpp"
+#include "puncture/materials/mooney_rivlin.hpp"
+#include "puncture/materials/neo_hookean.hpp"
+#include "puncture/membrane_stress.hpp"
+
+namespace puncture {
+
+using MaterialLaw = std::variant<Gent, NeoHookean, MooneyRivlin>;
+
+struct Material {
+  double shear_modulus_mpa = 0.06;  // initial shear modulus G [MPa]; paper §4.1
+  MaterialLaw law = Gent{125.0};    // the paper's Gent law with J_lim = 125
+};
+
+std::string law_name(const MaterialLaw& law);
+// One-line description with parameters, e.g. "gent (J_lim = 125)".
+std::string describe(const Material& material);
+double max_first_invariant(const MaterialLaw& law);  // 3 + J_lim for Gent, infinity otherwise
+
+MembraneStress membrane_stress(const MaterialLaw& law, double l1, double l2);
+
+// Inverse of s1(lambda1, lambda2) at fixed lambda2: the radial stretch lambda1 >= lambda2^(-1/2)
+// whose radial nominal stress / G equals s1.  Empty when s1 < 0 (a membrane carries no
+// compression) or when no stretch below the locking limit can carry s1 (never for Gent: s1 grows
+// without bound towards the limit).
+std::optional<double> radial_stretch_for_stress(const MaterialLaw& law, double s1, double l2);
+
+// Equibiaxial nominal stress / G at stretch l (the stress in Part III).
+double equibiaxial_stress(const MaterialLaw& law, double l);
+// Uniaxial nominal stress / G at stretch l (lambda2 = lambda3 = l^(-1/2)).
+double uniaxial_stress(const MaterialLaw& law, double l);
+
+}  // namespace puncture

@@ -1,0 +1,66 @@
+#pragma once
+// Principal nominal stresses of an incompressible membrane in plane stress (paper Eqs. (1)-(6)),
+// for any law W(I1, I2):  lambda3 = 1 / (lambda1 lambda2),
+//   s1 = dW/dlambda1 = W1 dI1/dlambda1 + W2 dI2/dlambda1,   s2 likewise,
+// with the Jacobian needed by the Part I and Part II ODEs and by the inverse lambda1(s1, lambda2).
+// All stresses are divided by the shear modulus G.
+#include <cmath>
+
+namespace puncture {
+
+struct MembraneStress {
+  double s1;       // radial (meridional) nominal stress / G
+  double s2;       // hoop nominal stress / G
+  double ds1_dl1;  // d s1 / d lambda1
+  double ds1_dl2;  // d s1 / d lambda2 (= d s2 / d lambda1: W is a potential)
+  double ds2_dl2;  // d s2 / d lambda2
+  double i1;       // first invariant of the right Cauchy-Green tensor
+};
+
+inline double first_invariant(double l1, double l2) {
+  const double l3 = 1.0 / (l1 * l2);
+  return l1 * l1 + l2 * l2 + l3 * l3;
+}
+
+inline double second_invariant(double l1, double l2) {
+  return l1 * l1 * l2 * l2 + 1.0 / (l1 * l1) + 1.0 / (l2 * l2);
+}
+
+template <class Law>
+MembraneStress membrane_stress(const Law& law, double l1, double l2) {
+  const double l1s = l1 * l1, l2s = l2 * l2;
+  const double l3s = 1.0 / (l1s * l2s);
+  const double i1 = l1s + l2s + l3s;
+  const double i2 = l1s * l2s + 1.0 / l1s + 1.0 / l2s;
+  const auto d = law.derivatives(i1, i2);
+  // First and second derivatives of I1 and I2 with respect to the two in-plane stretches.
+  const double a1 = 2.0 * (l1 - l3s / l1), a2 = 2.0 * (l2 - l3s / l2);
+  const double b1 = 2.0 * (l1 * l2s - 1.0 / (l1s * l1)), b2 = 2.0 * (l1s * l2 - 1.0 / (l2s * l2));
+  const double a11 = 2.0 + 6.0 * l3s / l1s, a22 = 2.0 + 6.0 * l3s / l2s;
+  const double a12 = 4.0 * l3s / (l1 * l2);
+  const double b11 = 2.0 * l2s + 6.0 / (l1s * l1s), b22 = 2.0 * l1s + 6.0 / (l2s * l2s);
+  const double b12 = 4.0 * l1 * l2;
+  MembraneStress s;
+  s.s1 = d.w1 * a1 + d.w2 * b1;
+  s.s2 = d.w1 * a2 + d.w2 * b2;
+  s.ds1_dl1 = d.w11 * a1 * a1 + 2.0 * d.w12 * a1 * b1 + d.w22 * b1 * b1 + d.w1 * a11 + d.w2 * b11;
+  s.ds1_dl2 = d.w11 * a1 * a2 + d.w12 * (a1 * b2 + a2 * b1) + d.w22 * b1 * b2 + d.w1 * a12 +
+              d.w2 * b12;
+  s.ds2_dl2 = d.w11 * a2 * a2 + 2.0 * d.w12 * a2 * b2 + d.w22 * b2 * b2 + d.w1 * a22 + d.w2 * b22;
+  s.i1 = i1;
+  return s;
+}
+
+// Largest radial stretch lambda1 at hoop stretch l2 before the law locks (infinity if it never
+// does): the larger root of lambda1^2 + l2^2 + 1/(lambda1^2 l2^2) = max_i1.
+template <class Law>
+double locking_radial_stretch(const Law& law, double l2) {
+  const double i1_max = law.max_i1();
+  if (!std::isfinite(i1_max)) return i1_max;
+  const double b = l2 * l2 - i1_max;  // x^2 + b x + 1/l2^2 = 0 with x = lambda1^2
+  const double disc = b * b - 4.0 / (l2 * l2);
+  if (disc <= 0.0) return 0.0;  // l2 alone already locks the material
+  return std::sqrt(0.5 * (-b + std::sqrt(disc)));
+}
+
+}  // namespace puncture

@@ -1,0 +1,60 @@
+#pragma once
+// What a user specifies: the membrane, the indenter, the contact and the failure criterion.
+// Inputs are in mm, N and MPa; defaults are the paper's lubricated silicone membrane.
+#include <string>
+#include <vector>
+
+#include "puncture/material.hpp"
+
+namespace puncture {
+
+struct Geometry {
+  double clamp_radius_mm = 25.0;    // inner radius of the clamping rings, A [mm]
+  double indenter_radius_mm = 2.0;  // radius of the flat-ended cylindrical indenter, a [mm]
+  double thickness_mm = 0.2;        // undeformed membrane thickness, H [mm]
+};
+
+// When the membrane, held at the indenter's edge at first, starts to slide over it.  Coulomb
+// friction alone cannot hold an unstretched membrane under the tip (docs/model.md, "Stick and
+// slip"), so any stick stage needs a criterion the paper does not give; each rule is one.
+enum class StickRule {
+  None,         // Coulomb friction only: the membrane slides from the first touch (default)
+  Force,        // held until the indenter force reaches `threshold` [N]
+  Depth,        // held until the indentation depth reaches `threshold` [mm]
+  EdgeTension,  // held by adhesion until the radial line tension at the edge reaches
+                // `threshold` [N/mm], the adhesive strength of the edge
+  Always,       // never slides (fully stuck, the infinite-friction limit)
+};
+
+struct StickCriterion {
+  StickRule rule = StickRule::None;
+  double threshold = 0.0;  // unit set by the rule: N, mm or N/mm
+};
+
+// Which Part II equilibrium equation to use (docs/model.md, "Part II").
+enum class PartTwoEquation {
+  RingBalance,  // d(R s1)/dR = mu s2: vertical balance of a whole ring (default, consistent)
+  PaperEq18,    // ds1/dR = mu lambda2 s2 / a, as printed in the paper, for comparison
+};
+
+struct Problem {
+  Geometry geometry;
+  Material material;
+  double friction = 0.18;        // Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)
+  double critical_i1 = 95.2;     // I1 at which the membrane punctures (inflation test, §2.3)
+  StickCriterion stick;          // stick -> slip switch rule
+  PartTwoEquation part_two_equation = PartTwoEquation::RingBalance;
+};
+
+// Every problem with the input, each naming the parameter and its allowed range; empty if valid.
+std::vector<std::string> validation_errors(const Problem& problem);
+// Throws std::invalid_argument listing every problem.
+void validate(const Problem& problem);
+
+// Force scale 2 pi G H A [N]: the paper's normalised force is F / force_scale.
+double force_scale_n(const Problem& problem);
+
+std::string to_string(StickRule rule);
+std::string to_string(PartTwoEquation equation);
+
+}  // namespace puncture

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs the Debian packages puncture needs to build, test and benchmark.
+set -euo pipefail
+packages=(build-essential cmake libboost-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
+          libfmt-dev libgtest-dev libbenchmark-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}"
+fi

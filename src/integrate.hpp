@@ -1,0 +1,48 @@
+#pragma once
+// Adaptive Dormand-Prince integration of one membrane part along the reference radius, with an
+// observer at every accepted step.  The right-hand sides throw IntegrationFailure when the state
+// leaves the material's domain (locking, non-positive stretch); a trial step that does so is
+// retried smaller, and a state that cannot go on ends the integration with `false`.
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+
+namespace puncture::detail {
+
+struct IntegrationFailure {};
+
+struct IntegrationSettings {
+  double rel_tol;
+  double abs_tol;
+  int max_steps;
+};
+
+template <class State, class System, class Observer>
+bool integrate_part(const System& system, State& x, double r_begin, double r_end,
+                    const IntegrationSettings& settings, Observer&& observe) {
+  namespace odeint = boost::numeric::odeint;
+  auto stepper = odeint::make_controlled(settings.abs_tol, settings.rel_tol,
+                                         odeint::runge_kutta_dopri5<State>());
+  const double span = r_end - r_begin;
+  const double direction = span > 0.0 ? 1.0 : -1.0;
+  double r = r_begin;
+  double dr = 1e-3 * span;
+  const double min_step = 1e-14 * std::abs(span);
+  if (!observe(r, x)) return true;
+  int attempts = 0;
+  while (direction * (r_end - r) > 1e-15 * std::abs(span)) {
+    if (++attempts > settings.max_steps) return false;
+    if (direction * (r + dr - r_end) > 0.0) dr = r_end - r;
+    try {
+      if (stepper.try_step(system, x, r, dr) == odeint::success) {
+        if (!observe(r, x)) return true;  // the observer found what it looked for
+      }
+    } catch (const IntegrationFailure&) {
+      dr *= 0.25;
+      stepper.reset();
+    }
+    if (std::abs(dr) < min_step) return false;
+  }
+  return true;
+}
+
+}  // namespace puncture::detail

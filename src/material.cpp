@@ -1,0 +1,43 @@
+#include "puncture/material.hpp"
+
+#include <fmt/format.h>
+
+#include "inverse_stretch.hpp"
+
+namespace puncture {
+
+std::string law_name(const MaterialLaw& law) {
+  return std::visit([](const auto& l) { return std::string(l.name()); }, law);
+}
+
+std::string describe(const Material& material) {
+  const std::string params = std::visit(
+      [](const auto& l) -> std::string {
+        using L = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<L, Gent>) return fmt::format(" (J_lim = {:g})", l.j_lim);
+        if constexpr (std::is_same_v<L, MooneyRivlin>) return fmt::format(" (alpha = {:g})", l.alpha);
+        return "";
+      },
+      material.law);
+  return fmt::format("{}{}, G = {:g} MPa", law_name(material.law), params, material.shear_modulus_mpa);
+}
+
+double max_first_invariant(const MaterialLaw& law) {
+  return std::visit([](const auto& l) { return l.max_i1(); }, law);
+}
+
+MembraneStress membrane_stress(const MaterialLaw& law, double l1, double l2) {
+  return std::visit([&](const auto& l) { return membrane_stress(l, l1, l2); }, law);
+}
+
+std::optional<double> radial_stretch_for_stress(const MaterialLaw& law, double s1, double l2) {
+  return std::visit([&](const auto& l) { return detail::invert_radial_stress(l, s1, l2); }, law);
+}
+
+double equibiaxial_stress(const MaterialLaw& law, double l) { return membrane_stress(law, l, l).s1; }
+
+double uniaxial_stress(const MaterialLaw& law, double l) {
+  return membrane_stress(law, l, 1.0 / std::sqrt(l)).s1;
+}
+
+}  // namespace puncture

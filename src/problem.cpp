@@ -1,0 +1,99 @@
+#include "puncture/problem.hpp"
+
+#include <fmt/format.h>
+
+#include <boost/math/constants/constants.hpp>
+#include <cmath>
+#include <stdexcept>
+
+namespace puncture {
+
+namespace {
+
+void require_positive(std::vector<std::string>& errors, const char* name, double value,
+                      const char* unit) {
+  if (!std::isfinite(value) || value <= 0.0)
+    errors.push_back(fmt::format("{} must be a finite number > 0 {}, got {}", name, unit, value));
+}
+
+}  // namespace
+
+std::vector<std::string> validation_errors(const Problem& p) {
+  std::vector<std::string> errors;
+  const auto& g = p.geometry;
+  require_positive(errors, "clamp radius", g.clamp_radius_mm, "mm");
+  require_positive(errors, "indenter radius", g.indenter_radius_mm, "mm");
+  require_positive(errors, "thickness", g.thickness_mm, "mm");
+  if (std::isfinite(g.indenter_radius_mm) && std::isfinite(g.clamp_radius_mm) &&
+      g.indenter_radius_mm > 0.0 && g.indenter_radius_mm >= g.clamp_radius_mm)
+    errors.push_back(fmt::format(
+        "indenter radius must be smaller than the clamp radius ({} mm), got {} mm",
+        g.clamp_radius_mm, g.indenter_radius_mm));
+  require_positive(errors, "shear modulus", p.material.shear_modulus_mpa, "MPa");
+  if (const auto* gent = std::get_if<Gent>(&p.material.law)) {
+    if (!std::isfinite(gent->j_lim) || gent->j_lim <= 0.0)
+      errors.push_back(fmt::format("J_lim must be a finite number > 0, got {}", gent->j_lim));
+  }
+  if (const auto* mr = std::get_if<MooneyRivlin>(&p.material.law)) {
+    if (!std::isfinite(mr->alpha) || mr->alpha < 0.0 || mr->alpha >= 1.0)
+      errors.push_back(fmt::format("Mooney-Rivlin alpha = C2/(C1+C2) must be in [0, 1), got {}",
+                                   mr->alpha));
+  }
+  if (!std::isfinite(p.friction) || p.friction < 0.0)
+    errors.push_back(fmt::format("friction coefficient must be a finite number >= 0, got {}",
+                                 p.friction));
+  else if (p.friction > 50.0)
+    errors.push_back(fmt::format(
+        "friction coefficient must be <= 50 (beyond it the capstan factor exp(mu pi/2) exceeds "
+        "1e34; use --stick always for a fully held membrane), got {}",
+        p.friction));
+  const double i1_max = max_first_invariant(p.material.law);
+  if (!std::isfinite(p.critical_i1) || p.critical_i1 <= 3.0)
+    errors.push_back(fmt::format("critical I1 must be a finite number > 3, got {}", p.critical_i1));
+  else if (p.critical_i1 >= i1_max)
+    errors.push_back(fmt::format(
+        "critical I1 must be below the Gent locking limit 3 + J_lim = {:g}, got {:g}", i1_max,
+        p.critical_i1));
+  const auto& s = p.stick;
+  if (s.rule == StickRule::Force || s.rule == StickRule::Depth || s.rule == StickRule::EdgeTension) {
+    if (!std::isfinite(s.threshold) || s.threshold <= 0.0)
+      errors.push_back(fmt::format("stick threshold for rule '{}' must be a finite number > 0 {}, "
+                                   "got {}",
+                                   to_string(s.rule),
+                                   s.rule == StickRule::Force   ? "N"
+                                   : s.rule == StickRule::Depth ? "mm"
+                                                                : "N/mm",
+                                   s.threshold));
+  }
+  return errors;
+}
+
+void validate(const Problem& problem) {
+  const auto errors = validation_errors(problem);
+  if (errors.empty()) return;
+  std::string all = "invalid problem:";
+  for (const auto& e : errors) all += "\n  " + e;
+  throw std::invalid_argument(all);
+}
+
+double force_scale_n(const Problem& p) {
+  return 2.0 * boost::math::constants::pi<double>() * p.material.shear_modulus_mpa *
+         p.geometry.thickness_mm * p.geometry.clamp_radius_mm;
+}
+
+std::string to_string(StickRule rule) {
+  switch (rule) {
+    case StickRule::None: return "none";
+    case StickRule::Force: return "force";
+    case StickRule::Depth: return "depth";
+    case StickRule::EdgeTension: return "edge-tension";
+    case StickRule::Always: return "always";
+  }
+  return "?";
+}
+
+std::string to_string(PartTwoEquation equation) {
+  return equation == PartTwoEquation::RingBalance ? "ring-balance" : "paper-eq18";
+}
+
+}  // namespace puncture

@@ -1,0 +1,50 @@
+#pragma once
+// Scalar shooting: the root of a residual that increases with the shooting parameter, bracketed
+// from a known-negative end and refined with Boost.Math's TOMS 748.
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+
+namespace puncture::detail {
+
+// Value used for a residual that cannot be evaluated because the parameter drives the material
+// past its locking limit: that happens only beyond the root, where the residual is positive.
+inline constexpr double kBeyondDomain = 1e10;
+
+template <class Residual>
+double residual_or_beyond(Residual& g, double p) {
+  const std::optional<double> r = g(p);
+  return r ? *r : kBeyondDomain;
+}
+
+// Root in (lo, cap) of g, increasing, with g(lo) = g_lo < 0.  Empty if no sign change is found.
+// Without a finite cap the bracket grows from lo by initial_step, doubling.
+template <class Residual>
+std::optional<double> shoot_increasing(Residual&& g, double lo, double g_lo, double cap,
+                                       int max_iterations, double initial_step = 0.0) {
+  double hi = lo, g_hi = g_lo;
+  const bool bounded = std::isfinite(cap);
+  double step = initial_step > 0.0 ? initial_step : 0.05 * std::max(lo, 1e-3);
+  for (int k = 1; k <= 60 && g_hi < 0.0; ++k) {
+    lo = hi;
+    g_lo = g_hi;
+    hi = bounded ? lo + 0.5 * (cap - lo) : lo + step;
+    step *= 2.0;
+    g_hi = residual_or_beyond(g, hi);
+  }
+  if (g_hi < 0.0) return std::nullopt;
+  if (g_hi == 0.0) return hi;
+  std::uintmax_t iterations = static_cast<std::uintmax_t>(max_iterations);
+  const auto tolerance = [](double x0, double x1) {
+    return std::abs(x1 - x0) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(x1);
+  };
+  const auto bracket = boost::math::tools::toms748_solve(
+      [&](double p) { return residual_or_beyond(g, p); }, lo, hi, g_lo, g_hi, tolerance,
+      iterations);
+  if (iterations >= static_cast<std::uintmax_t>(max_iterations)) return std::nullopt;
+  return 0.5 * (bracket.first + bracket.second);
+}
+
+}  // namespace puncture::detail

@@ -1,0 +1,120 @@
+// Material laws: stresses against finite differences of W, the Jacobian against finite
+// differences of the stresses, closed forms, and the inverse lambda1(s1, lambda2).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "puncture/material.hpp"
+
+namespace puncture {
+namespace {
+
+template <class Law>
+double energy(const Law& law, double l1, double l2) {
+  return law.derivatives(first_invariant(l1, l2), second_invariant(l1, l2)).w;
+}
+
+template <class Law>
+class MaterialLawTest : public ::testing::Test {
+ public:
+  static Law law() {
+    if constexpr (std::is_same_v<Law, Gent>) return Gent{125.0};
+    if constexpr (std::is_same_v<Law, MooneyRivlin>) return MooneyRivlin{0.2};
+    return Law{};
+  }
+};
+using Laws = ::testing::Types<Gent, NeoHookean, MooneyRivlin>;
+TYPED_TEST_SUITE(MaterialLawTest, Laws);
+
+// Central differences with step h have error O(h^2 W''') ~ 1e-10 relative at h = 1e-5, plus
+// round-off eps W / h ~ 1e-11: a 1e-7 relative tolerance has two orders of margin.
+constexpr double kFdStep = 1e-5;
+constexpr double kFdTol = 1e-7;
+
+TYPED_TEST(MaterialLawTest, StressesAreDerivativesOfEnergy) {
+  const auto law = TestFixture::law();
+  for (double l1 : {0.8, 1.0, 1.3, 2.5, 5.0}) {
+    for (double l2 : {0.9, 1.0, 1.7, 3.0}) {
+      if (first_invariant(l1, l2) >= law.max_i1() - 1.0) continue;
+      const auto st = membrane_stress(law, l1, l2);
+      const double h = kFdStep;
+      const double s1 = (energy(law, l1 + h, l2) - energy(law, l1 - h, l2)) / (2 * h);
+      const double s2 = (energy(law, l1, l2 + h) - energy(law, l1, l2 - h)) / (2 * h);
+      EXPECT_NEAR(st.s1, s1, kFdTol * (1.0 + std::abs(s1))) << l1 << " " << l2;
+      EXPECT_NEAR(st.s2, s2, kFdTol * (1.0 + std::abs(s2))) << l1 << " " << l2;
+    }
+  }
+}
+
+TYPED_TEST(MaterialLawTest, JacobianMatchesFiniteDifferences) {
+  const auto law = TestFixture::law();
+  for (double l1 : {0.8, 1.0, 1.3, 2.5, 5.0}) {
+    for (double l2 : {0.9, 1.0, 1.7, 3.0}) {
+      if (first_invariant(l1, l2) >= law.max_i1() - 1.0) continue;
+      const auto st = membrane_stress(law, l1, l2);
+      const double h = kFdStep;
+      const auto p1 = membrane_stress(law, l1 + h, l2), m1 = membrane_stress(law, l1 - h, l2);
+      const auto p2 = membrane_stress(law, l1, l2 + h), m2 = membrane_stress(law, l1, l2 - h);
+      const double d11 = (p1.s1 - m1.s1) / (2 * h), d12 = (p2.s1 - m2.s1) / (2 * h);
+      const double d21 = (p1.s2 - m1.s2) / (2 * h), d22 = (p2.s2 - m2.s2) / (2 * h);
+      EXPECT_NEAR(st.ds1_dl1, d11, kFdTol * (1.0 + std::abs(d11)));
+      EXPECT_NEAR(st.ds1_dl2, d12, kFdTol * (1.0 + std::abs(d12)));
+      EXPECT_NEAR(st.ds1_dl2, d21, kFdTol * (1.0 + std::abs(d21)));  // symmetry of the Hessian
+      EXPECT_NEAR(st.ds2_dl2, d22, kFdTol * (1.0 + std::abs(d22)));
+    }
+  }
+}
+
+TYPED_TEST(MaterialLawTest, UndeformedStateIsStressFreeWithShearModulusOne) {
+  const auto law = TestFixture::law();
+  const auto st = membrane_stress(law, 1.0, 1.0);
+  EXPECT_NEAR(st.s1, 0.0, 1e-15);
+  EXPECT_NEAR(st.s2, 0.0, 1e-15);
+  // Small uniaxial strain e: s = E e with E = 3 G (incompressible), G = 1 here.
+  const double e = 1e-6;
+  EXPECT_NEAR(uniaxial_stress(MaterialLaw{law}, 1.0 + e) / e, 3.0, 1e-5);
+}
+
+TYPED_TEST(MaterialLawTest, InverseRoundTrip) {
+  const MaterialLaw law{TestFixture::law()};
+  for (double l2 : {0.8, 1.0, 2.0, 4.0}) {
+    for (double s1 : {0.0, 1e-6, 0.3, 2.0, 10.0, 1e3}) {
+      const auto l1 = radial_stretch_for_stress(law, s1, l2);
+      ASSERT_TRUE(l1.has_value()) << s1 << " " << l2;
+      EXPECT_LT(first_invariant(*l1, l2), max_first_invariant(law));
+      EXPECT_NEAR(membrane_stress(law, *l1, l2).s1, s1, 1e-12 * (1.0 + s1)) << s1 << " " << l2;
+    }
+  }
+  EXPECT_FALSE(radial_stretch_for_stress(law, -0.1, 1.0).has_value());
+  EXPECT_FALSE(radial_stretch_for_stress(law, std::nan(""), 1.0).has_value());
+}
+
+TEST(GentClosedForm, MatchesPaperEquationsFiveAndSix) {
+  const Gent law{125.0};
+  for (double l1 : {1.2, 3.0, 7.0}) {
+    for (double l2 : {1.0, 2.0}) {
+      const double l3 = 1.0 / (l1 * l2);
+      const double den = 1.0 - (l1 * l1 + l2 * l2 + l3 * l3 - 3.0) / 125.0;
+      const auto st = membrane_stress(law, l1, l2);
+      EXPECT_NEAR(st.s1, (l1 * l1 - l3 * l3) / (l1 * den), 1e-12 * st.s1);
+      EXPECT_NEAR(st.s2, (l2 * l2 - l3 * l3) / (l2 * den), 1e-12 * std::abs(st.s2) + 1e-15);
+    }
+  }
+}
+
+TEST(GentClosedForm, InverseApproachesTheLockingStretch) {
+  const MaterialLaw law{Gent{125.0}};
+  const double lock = locking_radial_stretch(Gent{125.0}, 1.0);
+  const auto l1 = radial_stretch_for_stress(law, 1e8, 1.0);
+  ASSERT_TRUE(l1.has_value());
+  EXPECT_LT(*l1, lock);
+  EXPECT_GT(*l1, lock * (1.0 - 1e-6));
+}
+
+TEST(NeoHookeanClosedForm, EquibiaxialStress) {
+  for (double l : {1.1, 2.0, 5.0})
+    EXPECT_NEAR(equibiaxial_stress(NeoHookean{}, l), l - std::pow(l, -5.0), 1e-12 * l);
+}
+
+}  // namespace
+}  // namespace puncture
