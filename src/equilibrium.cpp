@@ -38,7 +38,8 @@ ScaledSettings scaled_settings(const Problem& p, const SolverOptions& o) {
           p.part_two_equation,
           {o.integration_rel_tol, o.integration_abs_tol, o.max_steps},
           o.shooting_tol,
-          o.max_shooting_iterations};
+          o.max_shooting_iterations,
+          o.field_points};
 }
 
 ScaledSolution solve_scaled(const Problem& problem, double f, Stage stage,
@@ -93,12 +94,10 @@ double max_first_invariant(const ScaledSolution& sol) {
   return std::max(sol.max_i1, 2.0 * l3 * l3 + 1.0 / (l3 * l3 * l3 * l3));
 }
 
-std::optional<double> part_two_indicator(const Problem& problem, double f,
-                                         const SolverOptions& options) {
+std::optional<ScaledSolution> part_two_onset(const Problem& problem, const SolverOptions& options) {
   const auto settings = scaled_settings(problem, options);
-  return std::visit(
-      [&](const auto& law) { return ForceSolver(law, settings).part_two_indicator(f); },
-      problem.material.law);
+  return std::visit([&](const auto& law) { return ForceSolver(law, settings).part_two_onset(); },
+                    problem.material.law);
 }
 
 namespace {

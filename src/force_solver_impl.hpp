@@ -1,8 +1,10 @@
 #pragma once
 // Implementation of ForceSolver (included by force_solver.hpp).
+#include <fmt/format.h>
+
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/roots.hpp>
-#include <fmt/format.h>
+#include <limits>
 
 #include "inverse_stretch.hpp"
 #include "shooting.hpp"
@@ -14,15 +16,29 @@ inline constexpr double kHalfPi = boost::math::constants::half_pi<double>();
 // compression) before the clamp: the hoop stretch falls short, so the residual is negative.
 inline constexpr double kTurnedBack = -1.0;
 
+// Slope phi in [0, pi/2] with sin(phi) exp(mu phi) = kappa (vertical balance at the corner with
+// the capstan ratio); pi/2 when kappa >= exp(mu pi/2).  The left side increases on [0, pi/2].
+inline double corner_slope(double kappa, double mu) {
+  if (kappa >= std::exp(mu * kHalfPi)) return kHalfPi;
+  std::uintmax_t iterations = 100;
+  return boost::math::tools::newton_raphson_iterate(
+      [&](double phi) {
+        const double e = std::exp(mu * phi);
+        return std::make_pair(std::sin(phi) * e - kappa, (std::cos(phi) + mu * std::sin(phi)) * e);
+      },
+      0.5 * std::asin(std::min(kappa, 1.0)), 0.0, kHalfPi, 52, iterations);
+}
+
 template <class Law>
 typename ForceSolver<Law>::PartOneRun ForceSolver<Law>::run_part_one(
     double f, double r0, PartOneState x, std::vector<PartOneSample>* samples) const {
   PartOneRun run;
-  run.max_i1 = 0.0;
   if (samples) samples->clear();
   const PartOneSystem<Law> system{law_, f, max_i1_};
+  IntegrationSettings integration = s_.integration;
+  if (samples) integration.max_step = (1.0 - r0) / std::max(1, s_.field_points);
   double last_l2 = x[2];
-  run.ok = integrate_part(system, x, r0, 1.0, s_.integration, [&](double r, const PartOneState& y) {
+  run.ok = integrate_part(system, x, r0, 1.0, integration, [&](double r, const PartOneState& y) {
     const double i1 = first_invariant(y[1], y[2]);
     if (i1 > run.max_i1) {
       run.max_i1 = i1;
@@ -39,55 +55,166 @@ typename ForceSolver<Law>::PartOneRun ForceSolver<Law>::run_part_one(
   // A Part I that fails (locks) on its way with the hoop stretch already below 1 has collapsed
   // towards the axis: it belongs to the negative side of the clamp residual as well.
   if (!run.ok && last_l2 < 1.0) run.turned_back = true;
-  if (run.turned_back) run.residual = kTurnedBack;
-  if (!run.turned_back) run.residual = x[2] - 1.0;
+  run.residual = run.turned_back ? kTurnedBack : x[2] - 1.0;
   run.height = x[3];
   return run;
 }
 
 template <class Law>
-std::optional<PartOneState> ForceSolver<Law>::stick_start(double f, double edge_l1) const {
-  // R = a, lambda2 = 1, s1 from the edge stretch; R s1 sin(phi) = f fixes the slope.
-  const double rs1 = s_.a * membrane_stress(law_, edge_l1, 1.0).s1;
-  // rs1 < f by round-off only at the vertical exit, where t = 0.
-  if (!(rs1 >= f * (1.0 - 1e-12)) || first_invariant(edge_l1, 1.0) >= max_i1_) return std::nullopt;
-  return PartOneState{std::sqrt(std::max(0.0, (rs1 - f) * (rs1 + f))), edge_l1, 1.0, 0.0};
-}
-
-// Slope phi in [0, pi/2] with sin(phi) exp(mu phi) = kappa (vertical balance at the corner with
-// the capstan ratio); pi/2 when kappa >= exp(mu pi/2).
-inline double corner_slope(double kappa, double mu) {
-  if (kappa >= std::exp(mu * kHalfPi)) return kHalfPi;
-  std::uintmax_t iterations = 100;
-  return boost::math::tools::newton_raphson_iterate(
-      [&](double phi) {
-        const double e = std::exp(mu * phi);
-        return std::make_pair(std::sin(phi) * e - kappa, (std::cos(phi) + mu * std::sin(phi)) * e);
-      },
-      std::asin(std::min(kappa, 1.0)) * 0.5, 0.0, kHalfPi, 52, iterations);
+std::optional<typename ForceSolver<Law>::Start> ForceSolver<Law>::start(Configuration c, double f,
+                                                                       double p) const {
+  if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
+  switch (c) {
+    case Configuration::Stick: {
+      // R = a, lambda2 = 1, lambda1 = p; R s1 sin(phi) = f fixes the slope.
+      const double rs1 = s_.a * membrane_stress(law_, p, 1.0).s1;
+      // rs1 < f by round-off only at the vertical exit, where t = 0 (near lambda1 = 1 the
+      // inversion loses digits to cancellation, hence the loose bound).
+      if (!(rs1 >= f * (1.0 - 1e-8)) || first_invariant(p, 1.0) >= max_i1_) return std::nullopt;
+      const double t = std::sqrt(std::max(0.0, (rs1 - f) * (rs1 + f)));
+      return Start{{t, p, 1.0, 0.0}, s_.a, std::atan2(f, t),
+                   std::numeric_limits<double>::infinity()};
+    }
+    case Configuration::SlipWithoutPartTwo: {
+      // Part III stretch p: the corner material sits at R = a / p; the capstan law and the
+      // vertical balance give the exit slope.
+      const double r0 = s_.a / p;
+      const double s_eq = membrane_stress(law_, p, p).s1;
+      if (!(s_eq > 0.0) || !std::isfinite(s_eq) || first_invariant(p, p) >= max_i1_)
+        return std::nullopt;
+      const double kappa = f / (r0 * s_eq);
+      // Beyond exp(mu pi/2) the exit would have to be steeper than vertical: Part II exists.
+      if (kappa > std::exp(s_.mu * kHalfPi) * (1.0 + 1e-9)) return std::nullopt;
+      const double phi = corner_slope(kappa, s_.mu);
+      const double ratio = std::exp(s_.mu * phi);  // capstan: the outer side pulls harder
+      const auto l1 = invert_radial_stress(law_, s_eq * ratio, p, p);
+      if (!l1) return std::nullopt;
+      return Start{{r0 * s_eq * ratio * std::cos(phi), *l1, p, 0.0}, r0, phi, ratio};
+    }
+    case Configuration::SlipWithPartTwo: {
+      // Part I leaves the side vertically at R = a / p: R s1 = f, t = 0.
+      const auto l1 = invert_radial_stress(law_, f * p / s_.a, p);
+      if (!l1) return std::nullopt;
+      return Start{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPi, std::exp(s_.mu * kHalfPi)};
+    }
+    case Configuration::Unloaded: break;
+  }
+  return std::nullopt;
 }
 
 template <class Law>
-std::optional<PartOneState> ForceSolver<Law>::slip_start(double f, double l3_stretch,
-                                                          double* slope, double* ratio) const {
-  const double r_corner = s_.a / l3_stretch;
-  const double s_eq = membrane_stress(law_, l3_stretch, l3_stretch).s1;
-  if (!(s_eq > 0.0) || !std::isfinite(s_eq)) return std::nullopt;
-  const double phi = corner_slope(f / (r_corner * s_eq), s_.mu);
-  const double s1 = s_eq * std::exp(s_.mu * phi);  // capstan: the outer side pulls harder
-  const auto l1 = invert_radial_stress(law_, s1, l3_stretch, l3_stretch);
-  if (!l1) return std::nullopt;
-  if (slope) *slope = phi;
-  if (ratio) *ratio = std::exp(s_.mu * phi);
-  return PartOneState{r_corner * s1 * std::cos(phi), *l1, l3_stretch, 0.0};
+std::optional<double> ForceSolver<Law>::residual(Configuration c, double f, double p) const {
+  const auto st = start(c, f, p);
+  if (!st) return std::nullopt;
+  const auto run = run_part_one(f, st->r0, st->state, nullptr);
+  return run.ok || run.turned_back ? std::optional<double>(run.residual) : std::nullopt;
 }
 
 template <class Law>
-std::optional<PartOneState> ForceSolver<Law>::side_start(double f, double top_l2) const {
-  // Part I leaves the side vertically at R = a / lambda2: R s1 = f, t = 0.
-  const auto l1 = invert_radial_stress(law_, f * top_l2 / s_.a, top_l2);
-  if (!l1) return std::nullopt;
-  return PartOneState{0.0, *l1, top_l2, 0.0};
+ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, bool record) const {
+  ScaledSolution sol;
+  sol.f = f;
+  sol.parameter = p;
+  sol.configuration = c;
+  sol.evaluations = 1;
+  const auto st = start(c, f, p);
+  if (!st) {
+    sol.status = Status::BeyondLocking;
+    sol.message = "the shooting parameter is outside the material's domain";
+    return sol;
+  }
+  const auto run = run_part_one(f, st->r0, st->state, record ? &sol.part_one : nullptr);
+  if (!run.ok) {
+    sol.message = run.turned_back ? "Part I turns back towards the axis before the clamp"
+                                  : "Part I cannot be integrated to the clamp (material locks)";
+    return sol;
+  }
+  sol.residual = run.residual;
+  sol.r_top = st->r0;
+  sol.corner_slope = st->slope;
+  sol.tension_ratio = st->ratio;
+  sol.edge_s1 = membrane_stress(law_, st->state[1], st->state[2]).s1;
+  sol.max_i1 = run.max_i1;
+  sol.max_i1_r = run.max_i1_r;
+  sol.depth = run.height;
+  if (c == Configuration::Stick) {
+    sol.r_corner = s_.a;
+  } else if (c == Configuration::SlipWithoutPartTwo) {
+    sol.r_corner = st->r0;
+    sol.part_three_stretch = p;
+  } else {
+    // March down the side from the top of Part II until the capstan condition with Part III
+    // holds (Eq. 22 with Eq. 20): s1(lambda1, a/R) = exp(mu pi/2) s_eq(a/R).
+    const double capstan = st->ratio;
+    auto corner_gap = [&](double r, const PartTwoState& y) {
+      const double l2 = s_.a / r;
+      return membrane_stress(law_, y[0], l2).s1 - capstan * membrane_stress(law_, l2, l2).s1;
+    };
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, max_i1_};
+    PartTwoState y{st->state[1], 0.0};
+    double r_prev = st->r0, r_hit = -1.0;
+    PartTwoState y_prev = y;
+    const double r_floor = s_.a / locking_radial_stretch(law_, 1.0);
+    IntegrationSettings integration = s_.integration;
+    if (record) integration.max_step = st->r0 / std::max(1, s_.field_points);
+    const bool ok = integrate_part(side, y, st->r0, std::isfinite(r_floor) ? r_floor : 1e-6 * s_.a,
+                                   integration, [&](double r, const PartTwoState& state) {
+                                     if (corner_gap(r, state) <= 0.0) {
+                                       r_hit = r;
+                                       return false;
+                                     }
+                                     r_prev = r;
+                                     y_prev = state;
+                                     if (record) sol.part_two.push_back({r, state[0], state[1]});
+                                     return true;
+                                   });
+    if (!ok || r_hit < 0.0) {
+      sol.status = Status::BeyondLocking;
+      sol.message = "Part II reaches the locking stretch before meeting the capstan condition";
+      return sol;
+    }
+    if (r_hit == st->r0) {
+      sol.message = "no Part II at this force and boundary stretch";
+      return sol;  // the capstan condition fails already at the top: no Part II here
+    }
+    // Locate the corner inside the last step with single steps from the last accepted state.
+    IntegrationStepper<PartTwoState> rk;
+    auto state_at = [&](double r) {
+      PartTwoState out;
+      rk.do_step(side, y_prev, r_prev, out, r - r_prev);
+      return out;
+    };
+    std::uintmax_t iterations = 100;
+    const auto bracket = boost::math::tools::toms748_solve(
+        [&](double r) { return corner_gap(r, state_at(r)); }, r_hit, r_prev,
+        boost::math::tools::eps_tolerance<double>(50), iterations);
+    const double r_corner = 0.5 * (bracket.first + bracket.second);
+    const PartTwoState corner = state_at(r_corner);
+    if (record) sol.part_two.push_back({r_corner, corner[0], corner[1]});
+    // I1 along Part II: at the accepted steps and at the corner.
+    auto track = [&](double r, double l1) {
+      const double i1 = first_invariant(l1, s_.a / r);
+      if (i1 > sol.max_i1) {
+        sol.max_i1 = i1;
+        sol.max_i1_r = r;
+      }
+    };
+    track(r_prev, y_prev[0]);
+    track(r_corner, corner[0]);
+    for (const auto& q : sol.part_two) track(q[0], q[1]);
+    sol.r_corner = r_corner;
+    sol.part_three_stretch = s_.a / r_corner;
+    sol.part_two_length = corner[1];
+    sol.depth += corner[1];
+    const double l3 = sol.part_three_stretch;
+    sol.edge_s1 = membrane_stress(law_, corner[0], l3).s1;
+    sol.tension_ratio = sol.edge_s1 / membrane_stress(law_, l3, l3).s1;
+  }
+  sol.integrated = true;
+  sol.status = std::abs(sol.residual) <= s_.shooting_tol ? Status::Converged : Status::NoConvergence;
+  if (!sol.ok())
+    sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);
+  return sol;
 }
 
 template <class Law>
@@ -106,13 +233,34 @@ std::optional<double> ForceSolver<Law>::part_two_onset_stretch(double f) const {
 }
 
 template <class Law>
+std::optional<ScaledSolution> ForceSolver<Law>::part_two_onset() const {
+  // The indicator rises through zero at the onset force.  Below it, Part I leaving the corner
+  // vertically turns back towards the axis (indicator kTurnedBack), so the sign change is found
+  // by bracketing, starting from a force far below any onset.
+  auto indicator = [&](double f) { return part_two_indicator(f); };
+  const double f_probe = 1e-4;
+  const auto g0 = indicator(f_probe);
+  if (!g0 || *g0 >= 0.0) return std::nullopt;
+  const auto f_on = shoot_increasing(indicator, f_probe, *g0,
+                                     std::numeric_limits<double>::infinity(), s_.max_iterations,
+                                     0.05);
+  if (!f_on) return std::nullopt;
+  const auto onset = part_two_onset_stretch(*f_on);
+  if (!onset) return std::nullopt;
+  // At the onset both slip configurations coincide; the one without Part II is assembled.
+  auto sol = assemble(Configuration::SlipWithoutPartTwo, *f_on, *onset, false);
+  if (!sol.integrated) sol = assemble(Configuration::SlipWithPartTwo, *f_on, *onset, false);
+  if (!sol.integrated) return std::nullopt;
+  return sol;
+}
+
+template <class Law>
 std::optional<double> ForceSolver<Law>::part_two_indicator(double f) const {
   const auto onset = part_two_onset_stretch(f);
   if (!onset) return std::nullopt;
-  const auto x0 = slip_start(f, *onset, nullptr, nullptr);
-  if (!x0) return std::nullopt;
-  const auto run = run_part_one(f, s_.a / *onset, *x0, nullptr);
-  return run.ok || run.turned_back ? std::optional<double>(run.residual) : std::nullopt;
+  // Part I leaving the corner vertically at the onset stretch: the SlipWithPartTwo start with a
+  // Part II of zero length (exactly R s1 = f, free of the round-off in the capstan balance).
+  return residual(Configuration::SlipWithPartTwo, f, *onset);
 }
 
 template <class Law>
@@ -121,12 +269,9 @@ ScaledSolution ForceSolver<Law>::stick(double f) const {
   sol.f = f;
   sol.configuration = Configuration::Stick;
   int evals = 0;
-  auto residual = [&](double l1) -> std::optional<double> {
-    const auto x0 = stick_start(f, l1);
-    if (!x0) return std::nullopt;
+  auto g = [&](double l1) {
     ++evals;
-    const auto run = run_part_one(f, s_.a, *x0, nullptr);
-    return run.ok || run.turned_back ? std::optional<double>(run.residual) : std::nullopt;
+    return residual(Configuration::Stick, f, l1);
   };
   // Lowest edge stretch: Part I leaves the edge vertically (R s1 = f).
   const auto l1_vertical = invert_radial_stress(law_, f / s_.a, 1.0);
@@ -135,39 +280,22 @@ ScaledSolution ForceSolver<Law>::stick(double f) const {
     sol.message = "the force exceeds what the membrane at the indenter's edge can carry";
     return sol;
   }
-  const double g0 = residual(*l1_vertical).value_or(kBeyondDomain);
+  const double g0 = g(*l1_vertical).value_or(kBeyondDomain);
   if (g0 >= 0.0) {
     sol.status = Status::StickWrapsSide;
-    sol.message = fmt::format(
-        "at this force a membrane held at the indenter's edge would have to wrap its side "
-        "(clamp residual {:.3g} with a vertical edge)",
-        g0);
+    sol.message =
+        "at this force a membrane held at the indenter's edge would have to wrap its side";
     return sol;
   }
-  const auto root = shoot_increasing(residual, *l1_vertical, g0,
-                                     locking_radial_stretch(law_, 1.0), s_.max_iterations);
+  const auto root =
+      shoot_increasing(g, *l1_vertical, g0, locking_radial_stretch(law_, 1.0), s_.max_iterations);
   if (!root) {
     sol.message = "stick shooting found no edge stretch meeting the clamp condition";
     sol.evaluations = evals;
     return sol;
   }
-  const auto x0 = stick_start(f, *root);
-  const auto run = x0 ? run_part_one(f, s_.a, *x0, &sol.part_one) : PartOneRun{};
-  sol.evaluations = evals + 1;
-  if (!run.ok) {
-    sol.message = "stick solution could not be integrated to the clamp";
-    return sol;
-  }
-  sol.r_corner = sol.r_top = s_.a;
-  sol.depth = run.height;
-  sol.corner_slope = std::atan2(f, (*x0)[0]);
-  sol.tension_ratio = std::numeric_limits<double>::infinity();
-  sol.edge_s1 = membrane_stress(law_, *root, 1.0).s1;
-  sol.max_i1 = run.max_i1;
-  sol.max_i1_r = run.max_i1_r;
-  sol.residual = run.residual;
-  sol.status = std::abs(run.residual) <= s_.shooting_tol ? Status::Converged : Status::NoConvergence;
-  if (!sol.ok()) sol.message = fmt::format("stick shooting stalled at clamp residual {:.3g}", run.residual);
+  sol = assemble(Configuration::Stick, f, *root, true);
+  sol.evaluations += evals;
   return sol;
 }
 
@@ -182,148 +310,42 @@ ScaledSolution ForceSolver<Law>::slip(double f) const {
     return sol;
   }
   int evals = 0;
-  auto without_two = [&](double l3) -> std::optional<double> {
-    const auto x0 = slip_start(f, l3, nullptr, nullptr);
-    if (!x0) return std::nullopt;
+  auto without_two = [&](double l3) {
     ++evals;
-    const auto run = run_part_one(f, s_.a / l3, *x0, nullptr);
-    return run.ok || run.turned_back ? std::optional<double>(run.residual) : std::nullopt;
+    return residual(Configuration::SlipWithoutPartTwo, f, l3);
   };
-  const double g_onset = without_two(*onset).value_or(kBeyondDomain);
+  auto with_two = [&](double top_l2) {
+    ++evals;
+    return residual(Configuration::SlipWithPartTwo, f, top_l2);
+  };
+  const double g_onset = part_two_indicator(f).value_or(kBeyondDomain);
+  std::optional<double> root;
+  Configuration c;
   if (g_onset < 0.0) {
     // Part I reaches the clamp with lambda2 < 1 even when it leaves the corner vertically, so a
     // larger Part III stretch (and a flatter exit) is needed: no Part II.
-    const double cap = locking_radial_stretch(law_, 1.0);
-    const auto root = shoot_increasing(without_two, *onset, g_onset, cap, s_.max_iterations);
-    if (!root) {
-      sol.message = "slip shooting (without Part II) found no Part III stretch meeting the clamp";
-      sol.evaluations = evals;
+    c = Configuration::SlipWithoutPartTwo;
+    root = shoot_increasing(without_two, *onset, g_onset, locking_radial_stretch(law_, 1.0),
+                            s_.max_iterations);
+  } else {
+    // Part II exists: shoot on lambda2 where Part I leaves the side (between 1 and the onset).
+    c = Configuration::SlipWithPartTwo;
+    const double g_one = with_two(1.0).value_or(kBeyondDomain);
+    if (g_one >= 0.0) {
+      sol.status = Status::BeyondLocking;
+      sol.message = "the force is beyond what the membrane on the indenter's side can carry";
       return sol;
     }
-    double slope = 0.0, ratio = 1.0;
-    const auto x0 = slip_start(f, *root, &slope, &ratio);
-    const auto run = x0 ? run_part_one(f, s_.a / *root, *x0, &sol.part_one) : PartOneRun{};
-    sol.evaluations = evals + 1;
-    if (!run.ok) {
-      sol.message = "slip solution could not be integrated to the clamp";
-      return sol;
-    }
-    sol.configuration = Configuration::SlipWithoutPartTwo;
-    sol.part_three_stretch = *root;
-    sol.r_corner = sol.r_top = s_.a / *root;
-    sol.depth = run.height;
-    sol.corner_slope = slope;
-    sol.tension_ratio = ratio;
-    sol.edge_s1 = membrane_stress(law_, (*x0)[1], *root).s1;
-    sol.max_i1 = run.max_i1;
-    sol.max_i1_r = run.max_i1_r;
-    sol.residual = run.residual;
-    sol.status = std::abs(run.residual) <= s_.shooting_tol ? Status::Converged : Status::NoConvergence;
-    if (!sol.ok()) sol.message = fmt::format("slip shooting stalled at clamp residual {:.3g}", run.residual);
-    return sol;
+    root = shoot_increasing(with_two, 1.0, g_one, *onset, s_.max_iterations);
   }
-  // Part II exists: shoot on lambda2 where Part I leaves the side (between 1 and the onset).
-  auto with_two = [&](double top_l2) -> std::optional<double> {
-    const auto x0 = side_start(f, top_l2);
-    if (!x0) return std::nullopt;
-    ++evals;
-    const auto run = run_part_one(f, s_.a / top_l2, *x0, nullptr);
-    return run.ok || run.turned_back ? std::optional<double>(run.residual) : std::nullopt;
-  };
-  const double g_one = with_two(1.0).value_or(kBeyondDomain);
-  if (g_one >= 0.0) {
-    sol.status = Status::BeyondLocking;
-    sol.message = "the force is beyond what the membrane on the indenter's side can carry";
-    return sol;
-  }
-  const auto root = shoot_increasing(with_two, 1.0, g_one, *onset, s_.max_iterations);
-  sol.evaluations = evals;
   if (!root) {
-    sol.message = "slip shooting (with Part II) found no boundary stretch meeting the clamp";
+    sol.message = fmt::format("slip shooting ({}) found no parameter meeting the clamp condition",
+                              to_string(c));
+    sol.evaluations = evals;
     return sol;
   }
-  return finish_part_two(f, *root, std::move(sol));
-}
-
-template <class Law>
-ScaledSolution ForceSolver<Law>::finish_part_two(double f, double top_l2,
-                                                 ScaledSolution sol) const {
-  const auto x0 = side_start(f, top_l2);
-  const double r_top = s_.a / top_l2;
-  const auto run = x0 ? run_part_one(f, r_top, *x0, &sol.part_one) : PartOneRun{};
-  ++sol.evaluations;
-  if (!run.ok) {
-    sol.message = "slip solution with Part II could not be integrated to the clamp";
-    return sol;
-  }
-  // March down the side until the capstan condition with Part III holds (Eq. 22 with Eq. 20):
-  // s1(lambda1, a/R) = exp(mu pi/2) s_eq(a/R).
-  const double capstan = std::exp(s_.mu * kHalfPi);
-  auto corner_gap = [&](double r, const PartTwoState& y) {
-    const double l2 = s_.a / r;
-    return membrane_stress(law_, y[0], l2).s1 - capstan * membrane_stress(law_, l2, l2).s1;
-  };
-  const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, max_i1_};
-  PartTwoState y{(*x0)[1], 0.0};
-  double r_prev = r_top, r_hit = -1.0;
-  PartTwoState y_prev = y;
-  double max_i1 = run.max_i1, max_i1_r = run.max_i1_r;
-  sol.part_two.clear();
-  const double r_floor = s_.a / locking_radial_stretch(law_, 1.0);
-  const bool ok = integrate_part(side, y, r_top, std::isfinite(r_floor) ? r_floor : 1e-6 * s_.a,
-                                 s_.integration, [&](double r, const PartTwoState& state) {
-                                   if (corner_gap(r, state) <= 0.0) {
-                                     r_hit = r;
-                                     return false;
-                                   }
-                                   r_prev = r;
-                                   y_prev = state;
-                                   sol.part_two.push_back({r, state[0], state[1]});
-                                   return true;
-                                 });
-  if (!ok || r_hit < 0.0) {
-    sol.status = Status::BeyondLocking;
-    sol.message = "Part II reaches the locking stretch before meeting the capstan condition";
-    return sol;
-  }
-  // Locate the corner inside the last step with single Dormand-Prince steps from the last state.
-  boost::numeric::odeint::runge_kutta_dopri5<PartTwoState> rk;
-  auto state_at = [&](double r) {
-    PartTwoState out;
-    rk.reset();
-    rk.do_step(side, y_prev, r_prev, out, r - r_prev);
-    return out;
-  };
-  std::uintmax_t iterations = 100;
-  const auto bracket = boost::math::tools::toms748_solve(
-      [&](double r) { return corner_gap(r, state_at(r)); }, r_hit, r_prev,
-      boost::math::tools::eps_tolerance<double>(50), iterations);
-  const double r_corner = 0.5 * (bracket.first + bracket.second);
-  const PartTwoState corner = state_at(r_corner);
-  sol.part_two.push_back({r_corner, corner[0], corner[1]});
-  for (const auto& p : sol.part_two) {
-    const double i1 = first_invariant(p[1], s_.a / p[0]);
-    if (i1 > max_i1) {
-      max_i1 = i1;
-      max_i1_r = p[0];
-    }
-  }
-  const double l3_stretch = s_.a / r_corner;
-  sol.configuration = Configuration::SlipWithPartTwo;
-  sol.part_three_stretch = l3_stretch;
-  sol.r_corner = r_corner;
-  sol.r_top = r_top;
-  sol.part_two_length = corner[1];
-  sol.depth = run.height + corner[1];
-  sol.corner_slope = kHalfPi;
-  sol.tension_ratio = membrane_stress(law_, corner[0], l3_stretch).s1 /
-                      membrane_stress(law_, l3_stretch, l3_stretch).s1;
-  sol.edge_s1 = membrane_stress(law_, corner[0], l3_stretch).s1;
-  sol.max_i1 = max_i1;
-  sol.max_i1_r = max_i1_r;
-  sol.residual = run.residual;
-  sol.status = std::abs(run.residual) <= s_.shooting_tol ? Status::Converged : Status::NoConvergence;
-  if (!sol.ok()) sol.message = fmt::format("slip shooting stalled at clamp residual {:.3g}", run.residual);
+  sol = assemble(c, f, *root, true);
+  sol.evaluations += evals;
   return sol;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Adaptive Dormand-Prince integration of one membrane part along the reference radius, with an
+// Adaptive Runge-Kutta integration of one membrane part along the reference radius, with an
 // observer at every accepted step.  The right-hand sides throw IntegrationFailure when the state
 // leaves the material's domain (locking, non-positive stretch); a trial step that does so is
 // retried smaller, and a state that cannot go on ends the integration with `false`.
@@ -14,14 +14,20 @@ struct IntegrationSettings {
   double rel_tol;
   double abs_tol;
   int max_steps;
+  double max_step = 0.0;  // largest step |dR| (0: no limit); used to sample fields densely
 };
+
+// Runge-Kutta-Fehlberg 7(8): at the 1e-10 tolerance the solver needs, it takes about a fifth of
+// the steps of Dormand-Prince 5(4) and halves the time of a shooting (bench/).
+template <class State>
+using IntegrationStepper = boost::numeric::odeint::runge_kutta_fehlberg78<State>;
 
 template <class State, class System, class Observer>
 bool integrate_part(const System& system, State& x, double r_begin, double r_end,
                     const IntegrationSettings& settings, Observer&& observe) {
   namespace odeint = boost::numeric::odeint;
   auto stepper = odeint::make_controlled(settings.abs_tol, settings.rel_tol,
-                                         odeint::runge_kutta_dopri5<State>());
+                                         IntegrationStepper<State>());
   const double span = r_end - r_begin;
   const double direction = span > 0.0 ? 1.0 : -1.0;
   double r = r_begin;
@@ -31,6 +37,8 @@ bool integrate_part(const System& system, State& x, double r_begin, double r_end
   int attempts = 0;
   while (direction * (r_end - r) > 1e-15 * std::abs(span)) {
     if (++attempts > settings.max_steps) return false;
+    if (settings.max_step > 0.0 && std::abs(dr) > settings.max_step)
+      dr = direction * settings.max_step;
     if (direction * (r + dr - r_end) > 0.0) dr = r_end - r;
     try {
       if (stepper.try_step(system, x, r, dr) == odeint::success) {
@@ -38,7 +46,7 @@ bool integrate_part(const System& system, State& x, double r_begin, double r_end
       }
     } catch (const IntegrationFailure&) {
       dr *= 0.25;
-      stepper.reset();
+      if constexpr (requires { stepper.reset(); }) stepper.reset();
     }
     if (std::abs(dr) < min_step) return false;
   }

@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
+#include "depth_newton.hpp"
 #include "scaled_problem.hpp"
 #include "shooting.hpp"
 
@@ -166,6 +168,109 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
   return out;
 }
 
+namespace {
+
+// Quadratic extrapolation in depth of the last three converged points of a segment (fewer
+// points: lower order), the predictor of the Newton corrector.
+struct Predictor {
+  std::vector<std::array<double, 3>> history;  // depth, f, parameter
+  bool usable() const { return history.size() >= 2; }
+  std::array<double, 2> at(double d) const {
+    const std::size_t n = history.size(), m = std::min<std::size_t>(n, 3);
+    std::array<double, 2> out{0.0, 0.0};
+    for (std::size_t i = n - m; i < n; ++i) {
+      double w = 1.0;
+      for (std::size_t j = n - m; j < n; ++j)
+        if (j != i) w *= (d - history[j][0]) / (history[i][0] - history[j][0]);
+      out[0] += w * history[i][1];
+      out[1] += w * history[i][2];
+    }
+    return out;
+  }
+};
+
+// Fills out.points along the depth grid; false (with out.status/message) on failure.
+template <class Law>
+bool follow_curve(const Problem& p, const Law& law, const detail::ScaledSettings& settings,
+                  const SolverOptions& o, const StageBoundary& boundary, double end_depth,
+                  bool has_switch, const CurveOptions& curve, LoadingCurve& out) {
+  const double scale = force_scale_n(p);
+  const double big_a = p.geometry.clamp_radius_mm;
+  const detail::ForceSolver<Law> solver(law, settings);
+  detail::DepthNewton<Law> newton(solver, o.shooting_tol);
+  Predictor predictor;
+  Stage segment_stage = boundary.first_stage;
+  Configuration last_configuration = Configuration::Unloaded;
+  auto stage_at = [&](double depth) {
+    if (boundary.first_stage == Stage::Slip) return Stage::Slip;
+    if (!boundary.switches || depth <= boundary.depth_mm) return Stage::Stick;
+    return Stage::Slip;
+  };
+  auto expected_configuration = [&](double depth, Stage stage) {
+    if (stage == Stage::Stick) return Configuration::Stick;
+    return out.part_two_onset_depth_mm && depth >= *out.part_two_onset_depth_mm
+               ? Configuration::SlipWithPartTwo
+               : Configuration::SlipWithoutPartTwo;
+  };
+  auto add_point = [&](double depth, Stage stage) -> bool {
+    if (stage != segment_stage) {
+      predictor.history.clear();
+      newton.reset();
+      segment_stage = stage;
+    }
+    const double d = depth / big_a;
+    std::optional<detail::ScaledSolution> sol;
+    if (d > 0.0 && predictor.usable()) {
+      const Configuration c = expected_configuration(depth, stage);
+      if (c != last_configuration) newton.reset();
+      const auto guess = predictor.at(d);
+      sol = newton.solve(c, d, guess[0], guess[1]);
+    }
+    if (!sol) {
+      newton.reset();
+      const double f_guess = predictor.history.empty() ? 0.0 : predictor.history.back()[1];
+      sol = detail::solve_scaled_at_depth(p, d, stage, o, f_guess);
+    }
+    if (!sol->ok()) {
+      out.status = sol->status;
+      out.message = fmt::format("at depth {:.6g} mm ({} stage): {}", depth, to_string(stage),
+                                sol->message);
+      return false;
+    }
+    if (sol->configuration != Configuration::Unloaded)
+      predictor.history.push_back({d, sol->f, sol->parameter});
+    last_configuration = sol->configuration;
+    CurvePoint pt;
+    pt.depth_mm = depth;
+    pt.force_n = sol->f * scale;
+    pt.normalized_force = sol->f;
+    pt.stage = stage;
+    pt.configuration = sol->configuration;
+    pt.part_three_stretch = sol->part_three_stretch;
+    pt.part_two_length_mm = sol->part_two_length * big_a;
+    pt.corner_slope_rad = sol->corner_slope;
+    pt.max_first_invariant = detail::max_first_invariant(*sol);
+    out.points.push_back(pt);
+    return true;
+  };
+  const int n = curve.points;
+  for (int k = 0; k < n; ++k) {
+    const double depth = end_depth * k / (n - 1);
+    const double prev_depth = k == 0 ? 0.0 : end_depth * (k - 1) / (n - 1);
+    if (has_switch && depth > boundary.depth_mm && prev_depth <= boundary.depth_mm) {
+      // Both sides of the switch, at the switch depth.
+      if (!add_point(boundary.depth_mm, Stage::Stick)) return false;
+      if (!add_point(boundary.depth_mm, Stage::Slip)) return false;
+      out.stick_slip.force_sliding_n = out.points.back().force_n;
+    }
+    if (!add_point(depth, stage_at(depth))) return false;
+    if (curve.progress) curve.progress(k + 1, n);
+  }
+  return true;
+}
+
+}  // namespace
+
 LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
                            const SolverOptions& options) {
   LoadingCurve out;
@@ -204,66 +309,20 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
     out.stick_slip.depth_mm = boundary.depth_mm;
     out.stick_slip.force_stuck_n = boundary.force_stuck_n;
   }
-  auto stage_at = [&](double depth) {
-    if (boundary.first_stage == Stage::Slip) return Stage::Slip;
-    if (!boundary.switches || depth <= boundary.depth_mm) return Stage::Stick;
-    return Stage::Slip;
-  };
   // Part II onset in the slip stage.
   if (boundary.first_stage == Stage::Slip || boundary.switches) {
-    auto indicator = [&](double f) { return detail::part_two_indicator(p, f, o); };
-    const double f_probe = 1e-3;
-    if (const auto g0 = indicator(f_probe); g0 && *g0 < 0.0) {
-      if (const auto f_on = detail::shoot_increasing(indicator, f_probe, *g0, kInf,
-                                                     o.max_shooting_iterations, 0.1)) {
-        const auto s = detail::solve_scaled(p, *f_on, Stage::Slip, o);
-        if (s.ok()) {
-          out.part_two_onset_depth_mm = s.depth * big_a;
-          out.part_two_onset_force_n = s.f * scale;
-        }
-      }
+    if (const auto onset = detail::part_two_onset(p, o)) {
+      out.part_two_onset_depth_mm = onset->depth * big_a;
+      out.part_two_onset_force_n = onset->f * scale;
     }
   }
-  auto add_point = [&](double depth, Stage stage, double f_guess) -> std::optional<double> {
-    const auto s = detail::solve_scaled_at_depth(p, depth / big_a, stage, o, f_guess);
-    if (!s.ok()) {
-      out.status = s.status;
-      out.message = fmt::format("at depth {:.6g} mm ({} stage): {}", depth, to_string(stage),
-                                s.message);
-      return std::nullopt;
-    }
-    CurvePoint pt;
-    pt.depth_mm = depth;
-    pt.force_n = s.f * scale;
-    pt.normalized_force = s.f;
-    pt.stage = stage;
-    pt.configuration = s.configuration;
-    pt.part_three_stretch = s.part_three_stretch;
-    pt.part_two_length_mm = s.part_two_length * big_a;
-    pt.corner_slope_rad = s.corner_slope;
-    pt.max_first_invariant = detail::max_first_invariant(s);
-    out.points.push_back(pt);
-    return s.f;
-  };
-  double f_prev = 0.0;
-  const int n = curve.points;
-  for (int k = 0; k < n; ++k) {
-    const double depth = end_depth * k / (n - 1);
-    const double prev_depth = k == 0 ? 0.0 : end_depth * (k - 1) / (n - 1);
-    if (has_switch && depth > boundary.depth_mm && prev_depth <= boundary.depth_mm) {
-      // Both sides of the switch, at the switch depth.
-      const auto f_stuck = add_point(boundary.depth_mm, Stage::Stick, f_prev);
-      if (!f_stuck) return out;
-      const auto f_slid = add_point(boundary.depth_mm, Stage::Slip, *f_stuck);
-      if (!f_slid) return out;
-      out.stick_slip.force_sliding_n = *f_slid * scale;
-      f_prev = *f_slid;
-    }
-    const auto f = add_point(depth, stage_at(depth), f_prev);
-    if (!f) return out;
-    f_prev = *f;
-    if (curve.progress) curve.progress(k + 1, n);
-  }
+  const detail::ScaledSettings settings = detail::scaled_settings(p, o);
+  const bool ok = std::visit(
+      [&](const auto& law) {
+        return follow_curve(p, law, settings, o, boundary, end_depth, has_switch, curve, out);
+      },
+      p.material.law);
+  if (!ok) return out;
   out.status = Status::Converged;
   return out;
 }

@@ -22,8 +22,7 @@ ScaledSolution solve_scaled_at_depth(const Problem& problem, double d, Stage sta
 // Largest I1 anywhere in the membrane, Part III included.
 double max_first_invariant(const ScaledSolution& sol);
 
-// See ForceSolver::part_two_indicator.
-std::optional<double> part_two_indicator(const Problem& problem, double f,
-                                         const SolverOptions& options);
+// See ForceSolver::part_two_onset.
+std::optional<ScaledSolution> part_two_onset(const Problem& problem, const SolverOptions& options);
 
 }  // namespace puncture::detail
