@@ -1,0 +1,52 @@
+// `puncture curve`: the displacement-controlled loading curve, by default up to puncture.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "cli_error.hpp"
+#include "commands.hpp"
+#include "output.hpp"
+#include "progress.hpp"
+#include "puncture/loading_curve.hpp"
+
+namespace puncture::cli {
+
+void add_curve_options(CLI::App& app, CurveFlags& f) {
+  constexpr const char* kCurve = "Curve (for 'curve', the default subcommand)";
+  app.add_option("--points",
+                 f.points,
+                 "Number of equally spaced depth points from zero to the end of\n"
+                 "the curve [count] (2 to 100000)")
+      ->group(kCurve)
+      ->check(CLI::Range(2, 100000).description(""))
+      ->capture_default_str();
+  app.add_option("--max-depth",
+                 f.max_depth_mm,
+                 "End the curve at this indentation depth instead of at puncture\n"
+                 "[mm] (>= 0; 0 = at puncture)")
+      ->group(kCurve)
+      ->capture_default_str();
+}
+
+std::string run_curve(const Problem& problem, const CurveFlags& f, Format format) {
+  if (!std::isfinite(f.max_depth_mm) || f.max_depth_mm < 0.0)
+    throw InputError(fmt::format(
+        "--max-depth: must be a finite number >= 0 mm (0 = to puncture), got {}", f.max_depth_mm));
+  CurveReport report{problem, f.points, f.max_depth_mm, {}};
+  {
+    Progress progress("curve");
+    progress.note("locating the puncture point and the stage switch");
+    CurveOptions options;
+    options.points = f.points;
+    options.max_depth_mm = f.max_depth_mm;
+    if (progress.enabled())
+      options.progress = [&progress](int done, int total) { progress.update(done, total); };
+    report.curve = loading_curve(problem, options);
+  }
+  if (!report.curve.ok())
+    throw SolveError(fmt::format(
+        "the loading curve failed ({}): {}", to_string(report.curve.status), report.curve.message));
+  return render(report, format);
+}
+
+}  // namespace puncture::cli

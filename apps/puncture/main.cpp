@@ -1,0 +1,115 @@
+// puncture: command-line front end of the membrane puncture solver.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <exception>
+
+#include "cli_error.hpp"
+#include "commands.hpp"
+#include "output_options.hpp"
+#include "problem_options.hpp"
+
+namespace {
+
+constexpr const char* kDescription =
+    "puncture: how a thin rubber membrane, clamped on a circle, deforms and punctures when\n"
+    "a rigid flat-ended cylindrical indenter is pushed into its centre (axisymmetric\n"
+    "nonlinear membrane theory, Gent rubber, Coulomb friction on the indenter).\n"
+    "It computes the loading curve from zero depth to puncture (default), one equilibrium\n"
+    "state with all its fields, or the puncture point alone: the puncture force, depth,\n"
+    "stretch under the tip and where the crack starts.\n"
+    "Units: lengths in mm, forces in N, moduli and stresses in MPa; line tension in N/mm;\n"
+    "friction, stretches and the invariant I1 are dimensionless.  Defaults are the\n"
+    "paper's lubricated silicone membrane (A = 25 mm, a = 2 mm, H = 0.2 mm, Gent with\n"
+    "G = 0.06 MPa and J_lim = 125, mu' = 0.18, critical I1 = 95.2).\n";
+
+constexpr const char* kFooter =
+    "Physical and output flags may go before or after the subcommand.\n"
+    "Examples:\n"
+    "  puncture                                  paper's case: curve and puncture summary\n"
+    "  puncture curve --friction 1.95 --format csv -o curve.csv\n"
+    "  puncture state --force 2 --format json\n"
+    "  puncture state --depth 8 --stick force:0.5 --stage auto\n"
+    "  puncture puncture --indenter-radius 1 --material neo-hookean\n"
+    "Config file (--config FILE), one 'key = value' per line, keys are the long flag\n"
+    "names, e.g.:\n"
+    "  indenter-radius = 1\n"
+    "  friction = 1.95\n"
+    "  stick = \"force:0.5\"\n"
+    "Exit codes: 0 success, 1 invalid input, 2 the solver gave no usable result.";
+
+constexpr const char* kSubcommandFooter =
+    "The physical, curve and output flags (see puncture --help) may also be given.";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace puncture::cli;
+  try {
+    CLI::App app{kDescription, "puncture"};
+    app.fallthrough();  // parent flags are accepted after the subcommand too
+    app.require_subcommand(0, 1);
+    app.footer(kFooter);
+    app.get_formatter()->column_width(34);
+    app.set_config("--config",
+                   "",
+                   "Read flags from a TOML/INI file of 'key = value' lines (keys:\n"
+                   "long flag names); command-line flags override it")
+        ->type_name("FILE");
+    app.allow_config_extras(CLI::config_extras_mode::error);
+
+    ProblemFlags problem_flags;
+    OutputFlags output_flags;
+    CurveFlags curve_flags;
+    StateFlags state_flags;
+    add_problem_options(app, problem_flags);
+    add_curve_options(app, curve_flags);
+    add_output_options(app, output_flags);
+    app.add_subcommand("curve", "Loading curve from zero depth to puncture (the default)")
+        ->footer(kSubcommandFooter);
+    auto* state = app.add_subcommand(
+        "state", "Equilibrium at --force N or --depth MM, with every field along the membrane");
+    state->footer(kSubcommandFooter);
+    add_state_options(*state, state_flags);
+    auto* puncture = app.add_subcommand("puncture", "The predicted puncture point alone");
+    puncture->footer(kSubcommandFooter);
+
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      fmt::print(stderr, "puncture: error: {}\nRun with --help for more information.\n", e.what());
+      return kExitBadInput;
+    }
+
+    const auto problem = make_problem(problem_flags);
+    const auto format = format_of(output_flags);
+    check_writable(output_flags);
+    std::string text;
+    if (state->parsed())
+      text = run_state(problem, state_flags, format);
+    else if (puncture->parsed())
+      text = run_puncture(problem, format);
+    else
+      text = run_curve(problem, curve_flags, format);
+    write_output(output_flags, text);
+    return kExitOk;
+  } catch (const InputError& e) {
+    fmt::print(stderr, "puncture: error: {}\n", e.what());
+    return kExitBadInput;
+  } catch (const SolveError& e) {
+    fmt::print(stderr, "puncture: solver failure: {}\n", e.what());
+    return kExitSolverFailure;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "puncture: internal error: {}\n", e.what());
+    return kExitSolverFailure;
+  } catch (...) {
+    fmt::print(stderr,
+               "puncture: solver failure: the solver stopped with an unexpected internal "
+               "error\n");
+    return kExitSolverFailure;
+  }
+}

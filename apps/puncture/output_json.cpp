@@ -1,0 +1,139 @@
+// JSON writer: the same facts as the summary, every number checked finite; a quantity that is
+// unbounded in some states (the corner tension ratio of a held membrane) is written as null.
+#include <nlohmann/json.hpp>
+
+#include "finite.hpp"
+#include "names.hpp"
+#include "output.hpp"
+#include "part_two_onset.hpp"
+#include "stick_spec.hpp"
+#include "tables.hpp"
+
+namespace puncture::cli {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json rows_of(const Table& table) {
+  json rows = json::array();
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    json row = json::object();
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      const auto& cell = table.rows[r][c];
+      if (const auto* text = std::get_if<std::string>(&cell))
+        row[table.columns[c]] = *text;
+      else if (std::holds_alternative<int>(cell))
+        row[table.columns[c]] = std::get<int>(cell);
+      else
+        row[table.columns[c]] = checked_number(table, r, c);
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+json inputs_json(const Problem& p) {
+  json material = {{"law", material_token(p.material.law)},
+                   {"shear_modulus_mpa", finite(p.material.shear_modulus_mpa, "shear modulus")}};
+  if (const auto* gent = std::get_if<Gent>(&p.material.law))
+    material["j_lim"] = finite(gent->j_lim, "J_lim");
+  if (const auto* mr = std::get_if<MooneyRivlin>(&p.material.law))
+    material["alpha"] = finite(mr->alpha, "Mooney-Rivlin alpha");
+  json stick = {{"rule", to_string(p.stick.rule)}};
+  if (const auto unit = threshold_unit(p.stick.rule); !unit.empty()) {
+    stick["threshold"] = finite(p.stick.threshold, "stick threshold");
+    stick["threshold_unit"] = unit;
+  }
+  return {{"clamp_radius_mm", finite(p.geometry.clamp_radius_mm, "clamp radius")},
+          {"indenter_radius_mm", finite(p.geometry.indenter_radius_mm, "indenter radius")},
+          {"thickness_mm", finite(p.geometry.thickness_mm, "thickness")},
+          {"material", material},
+          {"friction", finite(p.friction, "friction")},
+          {"critical_i1", finite(p.critical_i1, "critical I1")},
+          {"stick", stick},
+          {"part_two_equation", to_string(p.part_two_equation)},
+          {"force_scale_n", finite(force_scale_n(p), "force scale")}};
+}
+
+json puncture_json(const PuncturePrediction& p) {
+  if (!p.found) return {{"found", false}, {"message", p.message}};
+  json out = rows_of(puncture_table(p)).at(0);
+  out["found"] = true;
+  return out;
+}
+
+json state_json(const Equilibrium& e) {
+  json out = {
+      {"status", to_string(e.status)},
+      {"stage", to_string(e.stage)},
+      {"configuration", configuration_token(e.configuration)},
+      {"force_n", finite(e.force_n, "force")},
+      {"normalized_force", finite(e.normalized_force, "normalised force")},
+      {"depth_mm", finite(e.depth_mm, "depth")},
+      {"part_three_stretch", finite(e.part_three_stretch, "Part III stretch")},
+      {"corner_reference_radius_mm",
+       finite(e.corner_reference_radius_mm, "corner reference radius")},
+      {"part_two_top_reference_radius_mm",
+       finite(e.part_two_top_reference_radius_mm, "Part II top reference radius")},
+      {"part_two_length_mm", finite(e.part_two_length_mm, "Part II length")},
+      {"corner_slope_rad", finite(e.corner_slope_rad, "corner slope")},
+      {"corner_tension_ratio", nullptr},
+      {"max_i1", finite(e.max_first_invariant, "largest I1")},
+      {"max_i1_reference_radius_mm",
+       finite(e.max_first_invariant_reference_radius_mm, "reference radius of the largest I1")},
+      {"clamp_residual", finite(e.clamp_residual, "clamp residual")},
+      {"shooting_evaluations", e.shooting_evaluations},
+  };
+  if (const auto ratio = finite_or_unbounded(e.corner_tension_ratio, "corner tension ratio"))
+    out["corner_tension_ratio"] = *ratio;
+  out["fields"] = rows_of(fields_table(e.fields));
+  return out;
+}
+
+json curve_json(const CurveReport& r) {
+  const auto& c = r.curve;
+  json stick_slip = {{"occurs", c.stick_slip.occurs}};
+  if (!c.points.empty()) stick_slip["first_stage"] = to_string(c.points.front().stage);
+  if (c.stick_slip.occurs) {
+    stick_slip["depth_mm"] = finite(c.stick_slip.depth_mm, "switch depth");
+    stick_slip["force_stuck_n"] = finite(c.stick_slip.force_stuck_n, "force before the switch");
+    stick_slip["force_sliding_n"] = finite(c.stick_slip.force_sliding_n, "force after the switch");
+  }
+  json part_two = nullptr;
+  if (const auto onset = part_two_onset(c))
+    part_two = {{"depth_mm", finite(onset->depth_mm, "Part II onset depth")},
+                {"force_n", finite(onset->force_n, "Part II onset force")},
+                {"at_stick_slip_switch", onset->at_switch}};
+  json out = {{"points_requested", r.points_requested},
+              {"max_depth_mm", nullptr},
+              {"stick_slip", stick_slip},
+              {"part_two_onset", part_two},
+              {"points", rows_of(curve_table(c.points))}};
+  if (r.max_depth_mm > 0.0) out["max_depth_mm"] = finite(r.max_depth_mm, "max depth");
+  return out;
+}
+
+std::string dump(const json& j) { return j.dump(2) + "\n"; }
+
+}  // namespace
+
+std::string json_text(const CurveReport& r) {
+  return dump({{"inputs", inputs_json(r.problem)},
+               {"curve", curve_json(r)},
+               {"puncture", puncture_json(r.curve.puncture)}});
+}
+
+std::string json_text(const StateReport& r) {
+  json request = {{"stage", to_string(r.state.stage)}, {"stage_choice", r.stage_choice}};
+  if (r.requested_force_n) request["force_n"] = finite(*r.requested_force_n, "requested force");
+  if (r.requested_depth_mm) request["depth_mm"] = finite(*r.requested_depth_mm, "requested depth");
+  return dump(
+      {{"inputs", inputs_json(r.problem)}, {"request", request}, {"state", state_json(r.state)}});
+}
+
+std::string json_text(const PunctureReport& r) {
+  return dump({{"inputs", inputs_json(r.problem)}, {"puncture", puncture_json(r.puncture)}});
+}
+
+}  // namespace puncture::cli

@@ -1,0 +1,157 @@
+#include "problem_options.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "cli_error.hpp"
+#include "stick_spec.hpp"
+
+namespace puncture::cli {
+
+namespace {
+
+constexpr const char* kGeometry = "Geometry";
+constexpr const char* kMaterial = "Material";
+constexpr const char* kContact = "Contact and failure";
+
+// The library's validation messages start with the parameter's name; this gives its flag.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 9> kFlagOfMessage{{
+    {"clamp radius", "--clamp-radius"},
+    {"indenter radius", "--indenter-radius"},
+    {"thickness", "--thickness"},
+    {"shear modulus", "--shear-modulus"},
+    {"J_lim", "--jlim"},
+    {"Mooney-Rivlin alpha", "--mr-alpha"},
+    {"friction", "--friction"},
+    {"critical I1", "--critical-i1"},
+    {"stick threshold", "--stick"},
+}};
+
+std::string with_flag(const std::string& message) {
+  for (const auto& [prefix, flag] : kFlagOfMessage)
+    if (std::string_view(message).substr(0, prefix.size()) == prefix)
+      return fmt::format("{}: {}", flag, message);
+  return message;
+}
+
+MaterialLaw law_of(const ProblemFlags& f, std::vector<std::string>& errors) {
+  if (f.material != "gent" && f.j_lim_option && f.j_lim_option->count() > 0)
+    errors.push_back(fmt::format("--jlim: applies only to --material gent, not {}", f.material));
+  if (f.material != "mooney-rivlin" && f.mr_alpha_option && f.mr_alpha_option->count() > 0)
+    errors.push_back(
+        fmt::format("--mr-alpha: applies only to --material mooney-rivlin, not {}", f.material));
+  if (f.material == "neo-hookean") return NeoHookean{};
+  if (f.material == "mooney-rivlin") return MooneyRivlin{f.mr_alpha};
+  return Gent{f.j_lim};
+}
+
+}  // namespace
+
+void add_problem_options(CLI::App& app, ProblemFlags& f) {
+  app.add_option(
+         "--clamp-radius", f.clamp_radius_mm, "Inner radius A of the clamping rings [mm] (> 0)")
+      ->group(kGeometry)
+      ->capture_default_str();
+  app.add_option("--indenter-radius",
+                 f.indenter_radius_mm,
+                 "Radius a of the flat-ended cylindrical indenter [mm]\n"
+                 "(> 0 and smaller than the clamp radius)")
+      ->group(kGeometry)
+      ->capture_default_str();
+  app.add_option("--thickness", f.thickness_mm, "Undeformed membrane thickness H [mm] (> 0)")
+      ->group(kGeometry)
+      ->capture_default_str();
+
+  app.add_option("--shear-modulus",
+                 f.shear_modulus_mpa,
+                 "Initial shear modulus G of the rubber [MPa] (> 0)")
+      ->group(kMaterial)
+      ->capture_default_str();
+  app.add_option("--material",
+                 f.material,
+                 "Strain-energy law: gent (the paper's, locks at I1 = 3 + J_lim),\n"
+                 "neo-hookean, or mooney-rivlin (with --mr-alpha)")
+      ->group(kMaterial)
+      ->check(CLI::IsMember({"gent", "neo-hookean", "mooney-rivlin"}))
+      ->capture_default_str();
+  f.j_lim_option = app.add_option("--jlim",
+                                  f.j_lim,
+                                  "Gent locking parameter J_lim: the largest I1 - 3\n"
+                                  "[dimensionless] (> 0; gent only)")
+                       ->group(kMaterial)
+                       ->capture_default_str();
+  f.mr_alpha_option = app.add_option("--mr-alpha",
+                                     f.mr_alpha,
+                                     "Mooney-Rivlin share of G in the I2 term, C2 / (C1 + C2)\n"
+                                     "[dimensionless] (in [0, 1); mooney-rivlin only)")
+                          ->group(kMaterial)
+                          ->capture_default_str();
+
+  app.add_option("--friction",
+                 f.friction,
+                 "Coulomb friction coefficient mu' between membrane and indenter\n"
+                 "[dimensionless] (>= 0; 0.18 lubricated, 1.95 dry)")
+      ->group(kContact)
+      ->capture_default_str();
+  app.add_option("--critical-i1",
+                 f.critical_i1,
+                 "First strain invariant I1 at which the membrane punctures\n"
+                 "[dimensionless] (> 3, and < 3 + J_lim for gent)")
+      ->group(kContact)
+      ->capture_default_str();
+  app.add_option("--stick",
+                 f.stick,
+                 "When the membrane, held at the indenter's edge at first, starts to\n"
+                 "slide over it.  Coulomb friction alone cannot hold the unstretched\n"
+                 "membrane under the tip, so by default ('none') the membrane slides\n"
+                 "from the first touch.  Rules:\n"
+                 "  none          Coulomb friction only: slides from the first touch\n"
+                 "  force:<N>     held until the indenter force reaches <N> [N]\n"
+                 "  depth:<mm>    held until the indentation depth reaches <mm> [mm]\n"
+                 "  edge-tension:<N/mm>\n"
+                 "                held by adhesion until the radial line tension at\n"
+                 "                the indenter's edge reaches <N/mm> [N/mm]\n"
+                 "  always        never slides (fully stuck)\n"
+                 "Thresholds must be > 0, e.g. --stick force:0.5")
+      ->group(kContact)
+      ->capture_default_str();
+  app.add_option("--part-two-equation",
+                 f.part_two_equation,
+                 "Equilibrium of Part II (membrane on the indenter's side):\n"
+                 "ring-balance (vertical balance of a ring, consistent) or\n"
+                 "paper-eq18 (the paper's Eq. 18 as printed, for comparison)")
+      ->group(kContact)
+      ->check(CLI::IsMember({"ring-balance", "paper-eq18"}))
+      ->capture_default_str();
+}
+
+Problem make_problem(const ProblemFlags& f) {
+  std::vector<std::string> errors;
+  Problem p;
+  p.geometry.clamp_radius_mm = f.clamp_radius_mm;
+  p.geometry.indenter_radius_mm = f.indenter_radius_mm;
+  p.geometry.thickness_mm = f.thickness_mm;
+  p.material.shear_modulus_mpa = f.shear_modulus_mpa;
+  p.material.law = law_of(f, errors);
+  p.friction = f.friction;
+  p.critical_i1 = f.critical_i1;
+  p.part_two_equation = f.part_two_equation == "paper-eq18" ? PartTwoEquation::PaperEq18
+                                                            : PartTwoEquation::RingBalance;
+  if (const auto stick = parse_stick(f.stick))
+    p.stick = *stick;
+  else
+    errors.push_back(fmt::format("--stick: expected {}, got '{}'", kStickForms, f.stick));
+  for (const auto& e : validation_errors(p)) errors.push_back(with_flag(e));
+  if (!errors.empty()) {
+    std::string all = "invalid input:";
+    for (const auto& e : errors) all += "\n  " + e;
+    throw InputError(all);
+  }
+  return p;
+}
+
+}  // namespace puncture::cli

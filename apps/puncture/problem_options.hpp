@@ -1,0 +1,35 @@
+#pragma once
+// The physical flags shared by every subcommand: membrane, indenter, material, contact and
+// failure.  Defaults are the library's (the paper's lubricated silicone membrane).
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "puncture/problem.hpp"
+
+namespace puncture::cli {
+
+struct ProblemFlags {
+  Problem defaults;
+  double clamp_radius_mm = defaults.geometry.clamp_radius_mm;
+  double indenter_radius_mm = defaults.geometry.indenter_radius_mm;
+  double thickness_mm = defaults.geometry.thickness_mm;
+  double shear_modulus_mpa = defaults.material.shear_modulus_mpa;
+  std::string material = "gent";
+  double j_lim = Gent{}.j_lim;
+  double mr_alpha = MooneyRivlin{}.alpha;
+  double friction = defaults.friction;
+  double critical_i1 = defaults.critical_i1;
+  std::string stick = "none";
+  std::string part_two_equation = "ring-balance";
+  CLI::Option* j_lim_option = nullptr;
+  CLI::Option* mr_alpha_option = nullptr;
+};
+
+// Registers the flags on `app` (with units and allowed values in their help).
+void add_problem_options(CLI::App& app, ProblemFlags& flags);
+
+// The problem the flags describe.  Throws InputError listing every invalid parameter, each
+// prefixed with its flag, using the library's validation_errors().
+Problem make_problem(const ProblemFlags& flags);
+
+}  // namespace puncture::cli
