@@ -1,10 +1,10 @@
 #pragma once
 // Equilibrium at a prescribed depth in a known configuration: Newton's method on the pair
 // (force, shooting parameter) with residuals (clamp condition, depth), one integration per
-// iteration.  The Jacobian is taken by finite differences when a segment starts and then kept
-// up to date with Broyden's update, so successive points of a loading curve, each started from
-// an extrapolation of the previous ones, cost two or three integrations.  Used for speed only:
-// every failure falls back to the bracketing solver (solve_scaled_at_depth).
+// iteration.  The Jacobian is taken by finite differences and reused from point to point along
+// a loading curve (a chord method) until the convergence slows down, so that a point started from
+// a good extrapolation of the previous ones costs three or four integrations.  Used for speed
+// only: any failure falls back to the bracketing solver (solve_scaled_at_depth).
 #include <Eigen/Dense>
 #include <cmath>
 #include <optional>
@@ -27,17 +27,20 @@ class DepthNewton {
     auto value = [&](const ScaledSolution& s) {
       return Eigen::Vector2d(s.residual, s.depth - depth);
     };
+    auto converged = [&](const Eigen::Vector2d& r) {
+      return std::abs(r[0]) <= tol_ && std::abs(r[1]) <= tol_ * std::max(depth, 1e-3);
+    };
     ScaledSolution sol = solver_.assemble(c, x[0], x[1], false);
     if (!sol.integrated) return std::nullopt;
     Eigen::Vector2d r = value(sol);
+    bool fresh = false;  // the Jacobian was computed at this point
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-      if (std::abs(r[0]) <= tol_ && std::abs(r[1]) <= tol_ * std::max(depth, 1e-3) &&
-          iteration > 0)
-        return sol;
-      if (!have_jacobian_ || iteration == kRefreshAfter) {
+      if (iteration > 0 && converged(r)) return sol;
+      if (!have_jacobian_) {
         if (!finite_difference_jacobian(c, x, r, depth)) return std::nullopt;
+        fresh = true;
       }
-      const Eigen::Vector2d step = -jacobian_.partialPivLu().solve(r);
+      const Eigen::Vector2d step = -lu_.solve(r);
       if (!step.allFinite()) return std::nullopt;
       // Backtrack when the full step leaves the material's domain or the configuration.
       double scale = 1.0;
@@ -49,43 +52,44 @@ class DepthNewton {
         if (next.integrated) break;
       }
       if (!next.integrated) return std::nullopt;
-      const Eigen::Vector2d dx = scale * step;
       const Eigen::Vector2d r_next = value(next);
-      // Broyden's ("good") update keeps the Jacobian consistent with the step just taken.
-      jacobian_ += ((r_next - r) - jacobian_ * dx) * dx.transpose() / dx.squaredNorm();
-      x += dx;
+      // A chord step that does not shrink the residual tenfold means a stale Jacobian.
+      if (!fresh && r_next.cwiseAbs().maxCoeff() > kChordContraction * r.cwiseAbs().maxCoeff())
+        have_jacobian_ = false;
+      x += scale * step;
       r = r_next;
       sol = std::move(next);
-      if (std::abs(dx[0]) <= 1e-15 * x[0] && std::abs(dx[1]) <= 1e-15 * x[1]) break;
     }
-    if (std::abs(r[0]) <= tol_ && std::abs(r[1]) <= tol_ * std::max(depth, 1e-3)) return sol;
+    if (converged(r)) return sol;
     have_jacobian_ = false;
     return std::nullopt;
   }
 
  private:
-  static constexpr int kMaxIterations = 12;
-  static constexpr int kRefreshAfter = 4;  // iterations before a stale Jacobian is recomputed
+  static constexpr int kMaxIterations = 10;
+  static constexpr double kChordContraction = 0.1;
 
   bool finite_difference_jacobian(Configuration c, const Eigen::Vector2d& x,
                                   const Eigen::Vector2d& r, double depth) {
-    // Relative steps of 1e-7: truncation ~1e-7 and round-off ~1e-10/1e-7, both far below what
-    // Newton needs to converge.
+    // Relative steps of 1e-7: truncation ~1e-7 and round-off ~1e-10/1e-7 relative, both far
+    // below what Newton needs to converge.
+    Eigen::Matrix2d jacobian;
     for (int j = 0; j < 2; ++j) {
       Eigen::Vector2d xp = x;
       const double h = 1e-7 * x[j];
       xp[j] += h;
       const auto s = solver_.assemble(c, xp[0], xp[1], false);
       if (!s.integrated) return false;
-      jacobian_.col(j) = (Eigen::Vector2d(s.residual, s.depth - depth) - r) / h;
+      jacobian.col(j) = (Eigen::Vector2d(s.residual, s.depth - depth) - r) / h;
     }
-    have_jacobian_ = jacobian_.allFinite() && std::abs(jacobian_.determinant()) > 0.0;
+    have_jacobian_ = jacobian.allFinite() && std::abs(jacobian.determinant()) > 0.0;
+    if (have_jacobian_) lu_.compute(jacobian);
     return have_jacobian_;
   }
 
   const ForceSolver<Law>& solver_;
   double tol_;
-  Eigen::Matrix2d jacobian_ = Eigen::Matrix2d::Zero();
+  Eigen::PartialPivLU<Eigen::Matrix2d> lu_;
   bool have_jacobian_ = false;
 };
 

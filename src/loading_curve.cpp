@@ -170,22 +170,30 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
 
 namespace {
 
-// Quadratic extrapolation in depth of the last three converged points of a segment (fewer
-// points: lower order), the predictor of the Newton corrector.
+// Extrapolation of (f, p) to a new depth from the last converged points of a segment: the
+// predictor of the Newton corrector.  Near zero depth f ~ depth^3 and p - 1 ~ depth^2
+// (membrane theory), so it works with log f and log(p - 1) against log depth: from one point
+// with those powers, from two or three by Lagrange interpolation in the logs.
 struct Predictor {
   std::vector<std::array<double, 3>> history;  // depth, f, parameter
-  bool usable() const { return history.size() >= 2; }
+  bool usable() const { return !history.empty(); }
   std::array<double, 2> at(double d) const {
-    const std::size_t n = history.size(), m = std::min<std::size_t>(n, 3);
+    const std::size_t n = history.size(), m = std::min<std::size_t>(n, 4);
+    if (n == 1) {
+      const auto& h = history.front();
+      const double ratio = d / h[0];
+      return {h[1] * ratio * ratio * ratio, 1.0 + (h[2] - 1.0) * ratio * ratio};
+    }
     std::array<double, 2> out{0.0, 0.0};
     for (std::size_t i = n - m; i < n; ++i) {
       double w = 1.0;
       for (std::size_t j = n - m; j < n; ++j)
-        if (j != i) w *= (d - history[j][0]) / (history[i][0] - history[j][0]);
-      out[0] += w * history[i][1];
-      out[1] += w * history[i][2];
+        if (j != i)
+          w *= std::log(d / history[j][0]) / std::log(history[i][0] / history[j][0]);
+      out[0] += w * std::log(history[i][1]);
+      out[1] += w * std::log(history[i][2] - 1.0);
     }
-    return out;
+    return {std::exp(out[0]), 1.0 + std::exp(out[1])};
   }
 };
 
@@ -193,7 +201,8 @@ struct Predictor {
 template <class Law>
 bool follow_curve(const Problem& p, const Law& law, const detail::ScaledSettings& settings,
                   const SolverOptions& o, const StageBoundary& boundary, double end_depth,
-                  bool has_switch, const CurveOptions& curve, LoadingCurve& out) {
+                  bool has_switch, const std::optional<detail::ScaledSolution>& onset,
+                  const CurveOptions& curve, LoadingCurve& out) {
   const double scale = force_scale_n(p);
   const double big_a = p.geometry.clamp_radius_mm;
   const detail::ForceSolver<Law> solver(law, settings);
@@ -222,8 +231,16 @@ bool follow_curve(const Problem& p, const Law& law, const detail::ScaledSettings
     std::optional<detail::ScaledSolution> sol;
     if (d > 0.0 && predictor.usable()) {
       const Configuration c = expected_configuration(depth, stage);
-      if (c != last_configuration) newton.reset();
-      const auto guess = predictor.at(d);
+      auto guess = predictor.at(d);
+      if (c != last_configuration) {
+        newton.reset();
+        if (c == Configuration::SlipWithPartTwo && onset) {
+          // Part II starts with zero length at the onset: its top stretch starts from the onset
+          // Part III stretch, while the force keeps following the curve.
+          guess[1] = onset->parameter;
+          predictor.history = {{onset->depth, onset->f, onset->parameter}};
+        }
+      }
       sol = newton.solve(c, d, guess[0], guess[1]);
     }
     if (!sol) {
@@ -310,8 +327,10 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
     out.stick_slip.force_stuck_n = boundary.force_stuck_n;
   }
   // Part II onset in the slip stage.
+  std::optional<detail::ScaledSolution> onset;
   if (boundary.first_stage == Stage::Slip || boundary.switches) {
-    if (const auto onset = detail::part_two_onset(p, o)) {
+    onset = detail::part_two_onset(p, o);
+    if (onset) {
       out.part_two_onset_depth_mm = onset->depth * big_a;
       out.part_two_onset_force_n = onset->f * scale;
     }
@@ -319,7 +338,8 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
   const detail::ScaledSettings settings = detail::scaled_settings(p, o);
   const bool ok = std::visit(
       [&](const auto& law) {
-        return follow_curve(p, law, settings, o, boundary, end_depth, has_switch, curve, out);
+        return follow_curve(p, law, settings, o, boundary, end_depth, has_switch, onset, curve,
+                            out);
       },
       p.material.law);
   if (!ok) return out;

@@ -26,28 +26,45 @@ inline double second_invariant(double l1, double l2) {
   return l1 * l1 * l2 * l2 + 1.0 / (l1 * l1) + 1.0 / (l2 * l2);
 }
 
+// A law whose energy depends on I1 only declares `static constexpr bool depends_on_i2 = false;`
+// and the I2 terms are skipped (they cost a third of the evaluation, in the solver's inner loop).
+template <class Law>
+constexpr bool depends_on_i2() {
+  if constexpr (requires { Law::depends_on_i2; })
+    return Law::depends_on_i2;
+  else
+    return true;
+}
+
 template <class Law>
 MembraneStress membrane_stress(const Law& law, double l1, double l2) {
   const double l1s = l1 * l1, l2s = l2 * l2;
   const double l3s = 1.0 / (l1s * l2s);
   const double i1 = l1s + l2s + l3s;
-  const double i2 = l1s * l2s + 1.0 / l1s + 1.0 / l2s;
+  const double i2 = depends_on_i2<Law>() ? l1s * l2s + 1.0 / l1s + 1.0 / l2s : 3.0;
   const auto d = law.derivatives(i1, i2);
-  // First and second derivatives of I1 and I2 with respect to the two in-plane stretches.
+  // First and second derivatives of I1 with respect to the two in-plane stretches.
   const double a1 = 2.0 * (l1 - l3s / l1), a2 = 2.0 * (l2 - l3s / l2);
-  const double b1 = 2.0 * (l1 * l2s - 1.0 / (l1s * l1)), b2 = 2.0 * (l1s * l2 - 1.0 / (l2s * l2));
   const double a11 = 2.0 + 6.0 * l3s / l1s, a22 = 2.0 + 6.0 * l3s / l2s;
   const double a12 = 4.0 * l3s / (l1 * l2);
-  const double b11 = 2.0 * l2s + 6.0 / (l1s * l1s), b22 = 2.0 * l1s + 6.0 / (l2s * l2s);
-  const double b12 = 4.0 * l1 * l2;
   MembraneStress s;
-  s.s1 = d.w1 * a1 + d.w2 * b1;
-  s.s2 = d.w1 * a2 + d.w2 * b2;
-  s.ds1_dl1 = d.w11 * a1 * a1 + 2.0 * d.w12 * a1 * b1 + d.w22 * b1 * b1 + d.w1 * a11 + d.w2 * b11;
-  s.ds1_dl2 = d.w11 * a1 * a2 + d.w12 * (a1 * b2 + a2 * b1) + d.w22 * b1 * b2 + d.w1 * a12 +
-              d.w2 * b12;
-  s.ds2_dl2 = d.w11 * a2 * a2 + 2.0 * d.w12 * a2 * b2 + d.w22 * b2 * b2 + d.w1 * a22 + d.w2 * b22;
+  s.s1 = d.w1 * a1;
+  s.s2 = d.w1 * a2;
+  s.ds1_dl1 = d.w11 * a1 * a1 + d.w1 * a11;
+  s.ds1_dl2 = d.w11 * a1 * a2 + d.w1 * a12;
+  s.ds2_dl2 = d.w11 * a2 * a2 + d.w1 * a22;
   s.i1 = i1;
+  if constexpr (depends_on_i2<Law>()) {
+    // ... and of I2.
+    const double b1 = 2.0 * (l1 * l2s - 1.0 / (l1s * l1)), b2 = 2.0 * (l1s * l2 - 1.0 / (l2s * l2));
+    const double b11 = 2.0 * l2s + 6.0 / (l1s * l1s), b22 = 2.0 * l1s + 6.0 / (l2s * l2s);
+    const double b12 = 4.0 * l1 * l2;
+    s.s1 += d.w2 * b1;
+    s.s2 += d.w2 * b2;
+    s.ds1_dl1 += 2.0 * d.w12 * a1 * b1 + d.w22 * b1 * b1 + d.w2 * b11;
+    s.ds1_dl2 += d.w12 * (a1 * b2 + a2 * b1) + d.w22 * b1 * b2 + d.w2 * b12;
+    s.ds2_dl2 += 2.0 * d.w12 * a2 * b2 + d.w22 * b2 * b2 + d.w2 * b22;
+  }
   return s;
 }
 

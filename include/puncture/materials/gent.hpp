@@ -13,6 +13,7 @@ namespace puncture {
 struct Gent {
   double j_lim = 125.0;  // limiting value of I1 - 3 (dimensionless), the paper's J_lim
 
+  static constexpr bool depends_on_i2 = false;
   static constexpr std::string_view name() { return "gent"; }
   double max_i1() const { return 3.0 + j_lim; }
 

@@ -8,6 +8,7 @@
 namespace puncture {
 
 struct NeoHookean {
+  static constexpr bool depends_on_i2 = false;
   static constexpr std::string_view name() { return "neo-hookean"; }
   static constexpr double max_i1() { return std::numeric_limits<double>::infinity(); }
 
