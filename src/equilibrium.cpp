@@ -89,9 +89,16 @@ ScaledSolution solve_scaled_at_depth(const Problem& problem, double d, Stage sta
   return solve_scaled(problem, *f, stage, options);
 }
 
-double max_first_invariant(const ScaledSolution& sol) {
-  const double l3 = sol.part_three_stretch;
-  return std::max(sol.max_i1, 2.0 * l3 * l3 + 1.0 / (l3 * l3 * l3 * l3));
+double max_first_invariant(const ScaledSolution& sol) { return max_first_invariant_of(sol); }
+
+std::optional<ScaledSolution> puncture_at_corner(const Problem& problem,
+                                                 const SolverOptions& options) {
+  const auto settings = scaled_settings(problem, options);
+  return std::visit(
+      [&](const auto& law) {
+        return ForceSolver(law, settings).puncture_at_corner(problem.critical_i1);
+      },
+      problem.material.law);
 }
 
 std::optional<ScaledSolution> part_two_onset(const Problem& problem, const SolverOptions& options) {

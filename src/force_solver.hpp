@@ -81,6 +81,13 @@ class ForceSolver {
   // never appears before the material locks.
   std::optional<ScaledSolution> part_two_onset() const;
 
+  // Puncture in the slip stage with Part II and the crack at the corner, where I1 = i1c.  There
+  // the corner's state is fixed by the capstan condition and I1 = i1c alone, whatever the force,
+  // so marching Part II up from it to where R s1 = f and shooting Part I on to the clamp leaves
+  // a one-parameter shooting in f.  Empty when the puncture is not of that kind (the caller then
+  // searches the loading path).
+  std::optional<ScaledSolution> puncture_at_corner(double i1c) const;
+
  private:
   struct PartOneRun {
     bool ok = false;

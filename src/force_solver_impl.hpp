@@ -16,6 +16,12 @@ inline constexpr double kHalfPi = boost::math::constants::half_pi<double>();
 // compression) before the clamp: the hoop stretch falls short, so the residual is negative.
 inline constexpr double kTurnedBack = -1.0;
 
+// Largest I1 anywhere in the membrane, Part III (I1 = 2 L^2 + L^-4) included.
+inline double max_first_invariant_of(const ScaledSolution& sol) {
+  const double l3 = sol.part_three_stretch;
+  return std::max(sol.max_i1, 2.0 * l3 * l3 + 1.0 / (l3 * l3 * l3 * l3));
+}
+
 // Slope phi in [0, pi/2] with sin(phi) exp(mu phi) = kappa (vertical balance at the corner with
 // the capstan ratio); pi/2 when kappa >= exp(mu pi/2).  The left side increases on [0, pi/2].
 inline double corner_slope(double kappa, double mu) {
@@ -185,11 +191,19 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
       return out;
     };
     std::uintmax_t iterations = 100;
-    const auto bracket = boost::math::tools::toms748_solve(
-        [&](double r) { return corner_gap(r, state_at(r)); }, r_hit, r_prev,
-        boost::math::tools::eps_tolerance<double>(50), iterations);
-    const double r_corner = 0.5 * (bracket.first + bracket.second);
-    const PartTwoState corner = state_at(r_corner);
+    double r_corner = 0.0;
+    PartTwoState corner;
+    try {  // a trial step of the root search may leave the material's domain
+      const auto bracket = boost::math::tools::toms748_solve(
+          [&](double r) { return corner_gap(r, state_at(r)); }, r_hit, r_prev,
+          boost::math::tools::eps_tolerance<double>(50), iterations);
+      r_corner = 0.5 * (bracket.first + bracket.second);
+      corner = state_at(r_corner);
+    } catch (const IntegrationFailure&) {
+      sol.status = Status::BeyondLocking;
+      sol.message = "the corner of Part II lies beyond the material's locking limit";
+      return sol;
+    }
     if (record) sol.part_two.push_back({r_corner, corner[0], corner[1]});
     // I1 along Part II: at the accepted steps and at the corner.
     auto track = [&](double r, double l1) {
@@ -251,6 +265,93 @@ std::optional<ScaledSolution> ForceSolver<Law>::part_two_onset() const {
   auto sol = assemble(Configuration::SlipWithoutPartTwo, *f_on, *onset, false);
   if (!sol.integrated) sol = assemble(Configuration::SlipWithPartTwo, *f_on, *onset, false);
   if (!sol.integrated) return std::nullopt;
+  return sol;
+}
+
+template <class Law>
+std::optional<ScaledSolution> ForceSolver<Law>::puncture_at_corner(double i1c) const {
+  const double capstan = std::exp(s_.mu * kHalfPi);
+  // Corner state: s1(lambda1, L) = capstan s_eq(L) and I1(lambda1, L) = i1c, increasing in L.
+  auto corner_l1 = [&](double l) -> std::optional<double> {
+    const double s_eq = membrane_stress(law_, l, l).s1;
+    if (!std::isfinite(s_eq) || first_invariant(l, l) >= max_i1_) return std::nullopt;
+    return invert_radial_stress(law_, capstan * s_eq, l, l);
+  };
+  auto excess = [&](double l) -> std::optional<double> {
+    const auto l1 = corner_l1(l);
+    if (!l1) return std::nullopt;
+    return first_invariant(*l1, l) - i1c;
+  };
+  const auto l3 = shoot_increasing(excess, 1.0, 3.0 - i1c, locking_radial_stretch(law_, 1.0), 200);
+  if (!l3) return std::nullopt;
+  const auto l1_corner = corner_l1(*l3);
+  if (!l1_corner) return std::nullopt;
+  const double r_corner = s_.a / *l3;
+  const double q_corner = r_corner * membrane_stress(law_, *l1_corner, *l3).s1;  // R s1 there
+  const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, max_i1_};
+  // Top of Part II for force f: march up from the corner until R s1 = f (Eq. 12 with phi = pi/2).
+  auto top_stretch = [&](double f) -> std::optional<double> {
+    PartTwoState y{*l1_corner, 0.0};
+    double r_top = -1.0, r_prev = r_corner;
+    PartTwoState y_prev = y;
+    auto q = [&](double r, const PartTwoState& state) {
+      return r * membrane_stress(law_, state[0], s_.a / r).s1 - f;
+    };
+    const bool ok = integrate_part(side, y, r_corner, 1.0, s_.integration,
+                                   [&](double r, const PartTwoState& state) {
+                                     if (q(r, state) >= 0.0) {
+                                       r_top = r;
+                                       return false;
+                                     }
+                                     r_prev = r;
+                                     y_prev = state;
+                                     return true;
+                                   });
+    if (!ok || r_top < 0.0 || r_top == r_corner) return std::nullopt;
+    IntegrationStepper<PartTwoState> rk;
+    auto state_at = [&](double r) {
+      PartTwoState out;
+      rk.do_step(side, y_prev, r_prev, out, r - r_prev);
+      return out;
+    };
+    std::uintmax_t iterations = 100;
+    try {  // a trial step of the root search may leave the material's domain
+      const auto bracket = boost::math::tools::toms748_solve(
+          [&](double r) { return q(r, state_at(r)); }, r_prev, r_top,
+          boost::math::tools::eps_tolerance<double>(50), iterations);
+      return s_.a / (0.5 * (bracket.first + bracket.second));
+    } catch (const IntegrationFailure&) {
+      return std::nullopt;
+    }
+  };
+  // With R s1 unchanged up the side (no friction, ring balance) the force is R s1 at the corner
+  // and the position of the top is left to the ordinary shooting at that force.
+  if (s_.mu == 0.0 && s_.equation == PartTwoEquation::RingBalance) {
+    auto sol = slip(q_corner);
+    if (!sol.ok() || std::abs(max_first_invariant_of(sol) - i1c) > 1e-7 * i1c) return std::nullopt;
+    return sol;
+  }
+  // A larger force lifts the top of Part II, lowering its hoop stretch and so the clamp
+  // residual: shoot on minus the residual, from the force at which Part II has zero length.
+  auto g = [&](double f) -> std::optional<double> {
+    const auto top = top_stretch(f);
+    if (!top) return std::nullopt;
+    const auto r = residual(Configuration::SlipWithPartTwo, f, *top);
+    return r ? std::optional<double>(-*r) : std::nullopt;
+  };
+  const double f_lo = q_corner * (1.0 + 1e-9);
+  const auto g_lo = g(f_lo);
+  if (!g_lo || *g_lo >= 0.0) return std::nullopt;
+  const auto f = shoot_increasing(g, f_lo, *g_lo, std::numeric_limits<double>::infinity(),
+                                  s_.max_iterations, 0.25 * f_lo);
+  if (!f) return std::nullopt;
+  const auto top = top_stretch(*f);
+  if (!top) return std::nullopt;
+  auto sol = assemble(Configuration::SlipWithPartTwo, *f, *top, false);
+  // The march down must find the same corner, and the crack must sit there.
+  if (!sol.ok() || std::abs(sol.part_three_stretch - *l3) > 1e-7 * *l3 ||
+      std::abs(max_first_invariant_of(sol) - i1c) > 1e-7 * i1c)
+    return std::nullopt;
   return sol;
 }
 

@@ -136,8 +136,15 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
       }
     }
   }
-  if (!f_puncture && stage == Stage::Slip)
-    f_puncture = first_force_where(p, Stage::Slip, slip_from_f, slip_from_g, o, over_critical);
+  if (!f_puncture && stage == Stage::Slip) {
+    // Usually the crack starts at the corner once Part II exists, where a direct solve applies;
+    // it holds if the loading path reaches that force in the slip stage.  max I1 grows with the
+    // force along the path, so the first crossing is then this one.
+    if (const auto direct = detail::puncture_at_corner(p, o); direct && direct->f >= slip_from_f)
+      f_puncture = direct->f;
+    else
+      f_puncture = first_force_where(p, Stage::Slip, slip_from_f, slip_from_g, o, over_critical);
+  }
   if (!f_puncture) {
     out.message = fmt::format(
         "no puncture found: I1 does not reach the critical value {:g} before the solver fails",
@@ -229,6 +236,17 @@ bool follow_curve(const Problem& p, const Law& law, const detail::ScaledSettings
     }
     const double d = depth / big_a;
     std::optional<detail::ScaledSolution> sol;
+    if (d > 0.0 && !predictor.usable()) {
+      // Seed a new segment with one solve at a known force: a small one at the start of the
+      // curve (the power-law predictor carries it to the first depth), the held force at the
+      // stick -> slip switch.
+      const double f_seed = out.points.size() > 1 ? out.points.back().normalized_force : 1e-4;
+      const auto seed = stage == Stage::Stick ? solver.stick(f_seed) : solver.slip(f_seed);
+      if (seed.ok()) {
+        predictor.history = {{seed.depth, seed.f, seed.parameter}};
+        last_configuration = seed.configuration;
+      }
+    }
     if (d > 0.0 && predictor.usable()) {
       const Configuration c = expected_configuration(depth, stage);
       auto guess = predictor.at(d);

@@ -25,4 +25,8 @@ double max_first_invariant(const ScaledSolution& sol);
 // See ForceSolver::part_two_onset.
 std::optional<ScaledSolution> part_two_onset(const Problem& problem, const SolverOptions& options);
 
+// See ForceSolver::puncture_at_corner.
+std::optional<ScaledSolution> puncture_at_corner(const Problem& problem,
+                                                 const SolverOptions& options);
+
 }  // namespace puncture::detail
