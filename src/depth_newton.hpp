@@ -1,8 +1,9 @@
 #pragma once
 // Equilibrium at a prescribed depth in a known configuration: Newton's method on the pair
-// (log f, log(p - 1)) of the force and the shooting parameter (every parameter is a stretch > 1,
-// and near zero load both f and p - 1 vanish as powers of the depth, so relative steps suit
-// them), with residuals (clamp condition, depth), one integration per iteration.  The Jacobian is taken by finite differences and reused from point to point along
+// (log f, log(p - p0)) of the force and the shooting parameter above its floor p0
+// (ForceSolver::parameter_floor; near zero load both f and p - 1 vanish as powers of the depth,
+// so relative steps suit them), with residuals (clamp condition, depth), one integration per
+// iteration.  The Jacobian is taken by finite differences and reused from point to point along
 // a loading curve (a chord method) until the convergence slows down, so that a point started from
 // a good extrapolation of the previous ones costs three or four integrations.  Used for speed
 // only: any failure falls back to the bracketing solver (solve_scaled_at_depth).
@@ -24,7 +25,8 @@ class DepthNewton {
   void reset() { have_jacobian_ = false; }
 
   std::optional<ScaledSolution> solve(Configuration c, double depth, double f, double p) {
-    Eigen::Vector2d x(std::log(f), std::log(p - 1.0));
+    floor_ = solver_.parameter_floor(c);
+    Eigen::Vector2d x(std::log(f), std::log(p - floor_));
     if (!x.allFinite()) return std::nullopt;
     auto value = [&](const ScaledSolution& s) {
       return Eigen::Vector2d(s.residual, s.depth - depth);
@@ -89,11 +91,12 @@ class DepthNewton {
   }
 
   ScaledSolution evaluate(Configuration c, const Eigen::Vector2d& x) const {
-    return solver_.assemble(c, std::exp(x[0]), 1.0 + std::exp(x[1]), false);
+    return solver_.assemble(c, std::exp(x[0]), floor_ + std::exp(x[1]), false);
   }
 
   const ForceSolver<Law>& solver_;
   double tol_;
+  double floor_ = 1.0;
   Eigen::PartialPivLU<Eigen::Matrix2d> lu_;
   bool have_jacobian_ = false;
 };

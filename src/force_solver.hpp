@@ -54,13 +54,20 @@ struct ScaledSolution {
 // The shooting parameter p of each configuration:
 //   Stick               lambda1 at the indenter's edge (R = a, lambda2 = 1)
 //   SlipWithoutPartTwo  the Part III stretch Lambda
-//   SlipWithPartTwo     lambda2 where Part I leaves the indenter's side
+//   SlipWithPartTwo     lambda2 where Part I leaves the indenter's side (> a / A; it can be
+//                       below 1 when material from beyond the indenter's radius climbs its side)
 // Both slip parameters equal the same stretch where Part II appears, so p is continuous there.
 template <class Law>
 class ForceSolver {
  public:
   ForceSolver(const Law& law, const ScaledSettings& settings)
       : law_(law), s_(settings), max_i1_(law.max_i1()) {}
+
+  // Every configuration's parameter exceeds this floor: 1 for the stretches at the edge and of
+  // Part III, a / A for the hoop stretch a / R at the top of Part II (R < A).
+  double parameter_floor(Configuration configuration) const {
+    return configuration == Configuration::SlipWithPartTwo ? s_.a : 1.0;
+  }
 
   // Membrane held at the indenter's edge, Part III unstretched.
   ScaledSolution stick(double f) const;

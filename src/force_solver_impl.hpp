@@ -5,7 +5,9 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <limits>
+#include <tuple>
 
+#include "interior_maximum.hpp"
 #include "inverse_stretch.hpp"
 #include "shooting.hpp"
 
@@ -44,12 +46,9 @@ typename ForceSolver<Law>::PartOneRun ForceSolver<Law>::run_part_one(
   IntegrationSettings integration = s_.integration;
   if (samples) integration.max_step = (1.0 - r0) / std::max(1, s_.field_points);
   double last_l2 = x[2];
+  InteriorMaximum<PartOneState> i1_max;
   run.ok = integrate_part(system, x, r0, 1.0, integration, [&](double r, const PartOneState& y) {
-    const double i1 = first_invariant(y[1], y[2]);
-    if (i1 > run.max_i1) {
-      run.max_i1 = i1;
-      run.max_i1_r = r;
-    }
+    i1_max.observe(r, y, first_invariant(y[1], y[2]));
     if (samples) samples->push_back({r, y[0], y[1], y[2], y[3]});
     last_l2 = y[2];
     if (y[0] < 0.0) {  // meridian turned back towards the axis: hoop stretch too small
@@ -61,6 +60,20 @@ typename ForceSolver<Law>::PartOneRun ForceSolver<Law>::run_part_one(
   // A Part I that fails (locks) on its way with the hoop stretch already below 1 has collapsed
   // towards the axis: it belongs to the negative side of the clamp residual as well.
   if (!run.ok && last_l2 < 1.0) run.turned_back = true;
+  if (run.ok) {
+    IntegrationStepper<PartOneState> rk;
+    try {
+      std::tie(run.max_i1, run.max_i1_r) = i1_max.refine(
+          [&](double ra, const PartOneState& xa, double rb) {
+            PartOneState out;
+            rk.do_step(system, xa, ra, out, rb - ra);
+            return out;
+          },
+          [](double, const PartOneState& y) { return first_invariant(y[1], y[2]); });
+    } catch (const IntegrationFailure&) {
+      std::tie(run.max_i1, run.max_i1_r) = std::pair(i1_max.value(), i1_max.where());
+    }
+  }
   run.residual = run.turned_back ? kTurnedBack : x[2] - 1.0;
   run.height = x[3];
   return run;
@@ -99,6 +112,7 @@ std::optional<typename ForceSolver<Law>::Start> ForceSolver<Law>::start(Configur
     }
     case Configuration::SlipWithPartTwo: {
       // Part I leaves the side vertically at R = a / p: R s1 = f, t = 0.
+      if (!(p > s_.a)) return std::nullopt;  // the top must lie inside the clamp
       const auto l1 = invert_radial_stress(law_, f * p / s_.a, p);
       if (!l1) return std::nullopt;
       return Start{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPi, std::exp(s_.mu * kHalfPi)};
@@ -160,6 +174,7 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
     PartTwoState y{st->state[1], 0.0};
     double r_prev = st->r0, r_hit = -1.0;
     PartTwoState y_prev = y;
+    InteriorMaximum<PartTwoState> side_max;
     const double r_floor = s_.a / locking_radial_stretch(law_, 1.0);
     IntegrationSettings integration = s_.integration;
     if (record) integration.max_step = st->r0 / std::max(1, s_.field_points);
@@ -172,6 +187,7 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
                                      r_prev = r;
                                      y_prev = state;
                                      if (record) sol.part_two.push_back({r, state[0], state[1]});
+                                     side_max.observe(r, state, first_invariant(state[0], s_.a / r));
                                      return true;
                                    });
     if (!ok || r_hit < 0.0) {
@@ -206,16 +222,25 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
     }
     if (record) sol.part_two.push_back({r_corner, corner[0], corner[1]});
     // I1 along Part II: at the accepted steps and at the corner.
-    auto track = [&](double r, double l1) {
-      const double i1 = first_invariant(l1, s_.a / r);
+    auto track = [&](double r, double i1) {
       if (i1 > sol.max_i1) {
         sol.max_i1 = i1;
         sol.max_i1_r = r;
       }
     };
-    track(r_prev, y_prev[0]);
-    track(r_corner, corner[0]);
-    for (const auto& q : sol.part_two) track(q[0], q[1]);
+    track(r_corner, first_invariant(corner[0], s_.a / r_corner));
+    try {
+      const auto [i1, r] = side_max.refine(
+          [&](double ra, const PartTwoState& ya, double rb) {
+            PartTwoState out;
+            rk.do_step(side, ya, ra, out, rb - ra);
+            return out;
+          },
+          [&](double r, const PartTwoState& y) { return first_invariant(y[0], s_.a / r); });
+      track(r, i1);
+    } catch (const IntegrationFailure&) {
+      track(side_max.where(), side_max.value());
+    }
     sol.r_corner = r_corner;
     sol.part_three_stretch = s_.a / r_corner;
     sol.part_two_length = corner[1];
@@ -241,7 +266,15 @@ std::optional<double> ForceSolver<Law>::part_two_onset_stretch(double f) const {
     return s / l - target;
   };
   // g is undefined past the equibiaxial locking stretch; shoot_increasing treats that as beyond.
-  const auto root = shoot_increasing(g, 1.0, -target, locking_radial_stretch(law_, 1.0), 200);
+  const double cap = locking_radial_stretch(law_, 1.0);
+  if (!std::isfinite(cap)) {
+    // Without locking s_eq / L may stay bounded (neo-Hookean: below 1): if the target is out of
+    // reach, no Part III stretch lets Part I leave the corner at or below vertical, and Part II
+    // exists at every stretch.
+    constexpr double kFar = 1e6;
+    if (const auto far = g(kFar); far && *far < 0.0) return std::numeric_limits<double>::infinity();
+  }
+  const auto root = shoot_increasing(g, 1.0, -target, cap, 200);
   if (!root || !g(*root)) return std::nullopt;
   return root;
 }
@@ -359,6 +392,7 @@ template <class Law>
 std::optional<double> ForceSolver<Law>::part_two_indicator(double f) const {
   const auto onset = part_two_onset_stretch(f);
   if (!onset) return std::nullopt;
+  if (std::isinf(*onset)) return 1.0;  // Part II at every stretch
   // Part I leaving the corner vertically at the onset stretch: the SlipWithPartTwo start with a
   // Part II of zero length (exactly R s1 = f, free of the round-off in the capstan balance).
   return residual(Configuration::SlipWithPartTwo, f, *onset);
@@ -431,13 +465,17 @@ ScaledSolution ForceSolver<Law>::slip(double f) const {
   } else {
     // Part II exists: shoot on lambda2 where Part I leaves the side (between 1 and the onset).
     c = Configuration::SlipWithPartTwo;
-    const double g_one = with_two(1.0).value_or(kBeyondDomain);
-    if (g_one >= 0.0) {
+    // At the lowest top stretch, lambda2 -> a, Part I shrinks to the clamp and the residual
+    // tends to a - 1 < 0.  (Top stretches below 1 occur on soft laws at large loads: material
+    // from beyond the indenter's radius climbs its side, hoop-compressed but taut, s2 > 0.)
+    const double lowest = parameter_floor(Configuration::SlipWithPartTwo) * (1.0 + 1e-9);
+    const double g_low = with_two(lowest).value_or(kBeyondDomain);
+    if (g_low >= 0.0) {
       sol.status = Status::BeyondLocking;
       sol.message = "the force is beyond what the membrane on the indenter's side can carry";
       return sol;
     }
-    root = shoot_increasing(with_two, 1.0, g_one, *onset, s_.max_iterations);
+    root = shoot_increasing(with_two, lowest, g_low, *onset, s_.max_iterations);
   }
   if (!root) {
     sol.message = fmt::format("slip shooting ({}) found no parameter meeting the clamp condition",

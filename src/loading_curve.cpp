@@ -179,17 +179,17 @@ namespace {
 
 // Extrapolation of (f, p) to a new depth from the last converged points of a segment: the
 // predictor of the Newton corrector.  Near zero depth f ~ depth^3 and p - 1 ~ depth^2
-// (membrane theory), so it works with log f and log(p - 1) against log depth: from one point
-// with those powers, from two or three by Lagrange interpolation in the logs.
+// (membrane theory), so it works with log f and log(p - p0) (p0 the parameter's floor) against
+// log depth: from one point with those powers, from two to four by Lagrange interpolation.
 struct Predictor {
   std::vector<std::array<double, 3>> history;  // depth, f, parameter
   bool usable() const { return !history.empty(); }
-  std::array<double, 2> at(double d) const {
+  std::array<double, 2> at(double d, double floor) const {
     const std::size_t n = history.size(), m = std::min<std::size_t>(n, 4);
     if (n == 1) {
       const auto& h = history.front();
       const double ratio = d / h[0];
-      return {h[1] * ratio * ratio * ratio, 1.0 + (h[2] - 1.0) * ratio * ratio};
+      return {h[1] * ratio * ratio * ratio, floor + (h[2] - floor) * ratio * ratio};
     }
     std::array<double, 2> out{0.0, 0.0};
     for (std::size_t i = n - m; i < n; ++i) {
@@ -198,9 +198,9 @@ struct Predictor {
         if (j != i)
           w *= std::log(d / history[j][0]) / std::log(history[i][0] / history[j][0]);
       out[0] += w * std::log(history[i][1]);
-      out[1] += w * std::log(history[i][2] - 1.0);
+      out[1] += w * std::log(history[i][2] - floor);
     }
-    return {std::exp(out[0]), 1.0 + std::exp(out[1])};
+    return {std::exp(out[0]), floor + std::exp(out[1])};
   }
 };
 
@@ -249,7 +249,7 @@ bool follow_curve(const Problem& p, const Law& law, const detail::ScaledSettings
     }
     if (d > 0.0 && predictor.usable()) {
       const Configuration c = expected_configuration(depth, stage);
-      auto guess = predictor.at(d);
+      auto guess = predictor.at(d, solver.parameter_floor(c));
       if (c != last_configuration) {
         newton.reset();
         if (c == Configuration::SlipWithPartTwo && onset) {

@@ -1,0 +1,63 @@
+#pragma once
+// The largest I1 along an integrated part, to the integration's accuracy rather than the step
+// spacing: the observer keeps the samples around the largest one, and when that sample is
+// interior a Brent search over the two adjacent steps (each re-taken as one Runge-Kutta step from
+// its accepted start) finds the maximum between samples.
+#include <boost/math/tools/minima.hpp>
+#include <limits>
+#include <utility>
+
+namespace puncture::detail {
+
+template <class State>
+class InteriorMaximum {
+ public:
+  void observe(double r, const State& x, double value) {
+    if (value > best_value_) {
+      best_value_ = value;
+      best_r_ = r;
+      best_state_ = x;
+      has_before_ = has_last_;
+      before_r_ = last_r_;
+      before_state_ = last_state_;
+      has_after_ = false;
+      just_set_ = true;
+    } else if (just_set_) {
+      has_after_ = true;
+      after_r_ = r;
+      just_set_ = false;
+    }
+    has_last_ = true;
+    last_r_ = r;
+    last_state_ = x;
+  }
+
+  // step(r0, x0, r) integrates one step from (r0, x0) to r; value(r, x) is the quantity.
+  // Returns the maximum and where it is.
+  template <class Step, class Value>
+  std::pair<double, double> refine(Step&& step, Value&& value) const {
+    std::pair<double, double> best{best_value_, best_r_};
+    if (!has_before_ || !has_after_) return best;  // the maximum sits at an end of the part
+    auto search = [&](double r0, const State& x0, double r1) {
+      const auto [lo, hi] = std::minmax(r0, r1);
+      std::uintmax_t iterations = 60;
+      const auto found = boost::math::tools::brent_find_minima(
+          [&](double r) { return -value(r, step(r0, x0, r)); }, lo, hi, 40, iterations);
+      if (-found.second > best.first) best = {-found.second, found.first};
+    };
+    search(before_r_, before_state_, best_r_);
+    search(best_r_, best_state_, after_r_);
+    return best;
+  }
+
+  double value() const { return best_value_; }
+  double where() const { return best_r_; }
+
+ private:
+  double best_value_ = -std::numeric_limits<double>::infinity();
+  double best_r_ = 0.0, before_r_ = 0.0, after_r_ = 0.0, last_r_ = 0.0;
+  State best_state_{}, before_state_{}, last_state_{};
+  bool has_before_ = false, has_after_ = false, has_last_ = false, just_set_ = false;
+};
+
+}  // namespace puncture::detail
