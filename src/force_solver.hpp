@@ -46,6 +46,7 @@ struct ScaledSolution {
   double residual = 0.0;         // lambda2(A) - 1
   int evaluations = 0;
   bool integrated = false;       // every part was integrated (residual and depth are defined)
+  double shooting_tol = 0.0;     // the clamp tolerance it was judged against
   std::vector<PartOneSample> part_one;
   std::vector<PartTwoSample> part_two;
   bool ok() const { return status == Status::Converged; }

@@ -37,6 +37,17 @@ inline double corner_slope(double kappa, double mu) {
       0.5 * std::asin(std::min(kappa, 1.0)), 0.0, kHalfPi, 52, iterations);
 }
 
+// After a bracketing shooting whose bracket has shrunk to adjacent floating-point numbers, the
+// clamp residual left is the integration's noise; when the clamp condition is then met to within
+// a hundred times the tolerance (1e-8 by default) the solution is accepted.
+inline void accept_collapsed_bracket(ScaledSolution& sol, double tol_factor = 100.0) {
+  if (sol.status == Status::NoConvergence && sol.integrated &&
+      std::abs(sol.residual) <= tol_factor * sol.shooting_tol) {
+    sol.status = Status::Converged;
+    sol.message.clear();
+  }
+}
+
 template <class Law>
 typename ForceSolver<Law>::PartOneRun ForceSolver<Law>::run_part_one(
     double f, double r0, PartOneState x, std::vector<PartOneSample>* samples) const {
@@ -166,9 +177,14 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
     // March down the side from the top of Part II until the capstan condition with Part III
     // holds (Eq. 22 with Eq. 20): s1(lambda1, a/R) = exp(mu pi/2) s_eq(a/R).
     const double capstan = st->ratio;
+    // Where Part III would be locked (or the stresses are not finite) the corner lies higher up:
+    // the gap counts as negative there.
     auto corner_gap = [&](double r, const PartTwoState& y) {
       const double l2 = s_.a / r;
-      return membrane_stress(law_, y[0], l2).s1 - capstan * membrane_stress(law_, l2, l2).s1;
+      if (!(first_invariant(l2, l2) < max_i1_)) return -1.0;
+      const double gap =
+          membrane_stress(law_, y[0], l2).s1 - capstan * membrane_stress(law_, l2, l2).s1;
+      return std::isfinite(gap) ? gap : -1.0;
     };
     const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, max_i1_};
     PartTwoState y{st->state[1], 0.0};
@@ -199,27 +215,27 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
       sol.message = "no Part II at this force and boundary stretch";
       return sol;  // the capstan condition fails already at the top: no Part II here
     }
-    // Locate the corner inside the last step with single steps from the last accepted state.
-    IntegrationStepper<PartTwoState> rk;
-    auto state_at = [&](double r) {
-      PartTwoState out;
-      rk.do_step(side, y_prev, r_prev, out, r - r_prev);
-      return out;
+    // Locate the corner inside the last step, re-integrating adaptively from the last accepted
+    // state (near locking a single long step may leave the material's domain).  A trial that
+    // cannot be integrated lies past the corner, towards locking: the gap counts as negative.
+    auto gap_at = [&](double r) {
+      const auto y_r = step_or_advance(side, y_prev, r_prev, r, s_.integration);
+      return y_r ? corner_gap(r, *y_r) : -1.0;
     };
     std::uintmax_t iterations = 100;
-    double r_corner = 0.0;
-    PartTwoState corner;
-    try {  // a trial step of the root search may leave the material's domain
-      const auto bracket = boost::math::tools::toms748_solve(
-          [&](double r) { return corner_gap(r, state_at(r)); }, r_hit, r_prev,
-          boost::math::tools::eps_tolerance<double>(50), iterations);
-      r_corner = 0.5 * (bracket.first + bracket.second);
-      corner = state_at(r_corner);
-    } catch (const IntegrationFailure&) {
+    const auto bracket = boost::math::tools::toms748_solve(
+        gap_at, r_hit, r_prev, boost::math::tools::eps_tolerance<double>(50), iterations);
+    const double r_corner = 0.5 * (bracket.first + bracket.second);
+    const auto corner_state = step_or_advance(side, y_prev, r_prev, r_corner, s_.integration);
+    if (!corner_state || !(std::abs(corner_gap(r_corner, *corner_state)) <=
+                           1e-8 * capstan *
+                               membrane_stress(law_, s_.a / r_corner, s_.a / r_corner).s1)) {
       sol.status = Status::BeyondLocking;
       sol.message = "the corner of Part II lies beyond the material's locking limit";
       return sol;
     }
+    const PartTwoState corner = *corner_state;
+    IntegrationStepper<PartTwoState> rk;
     if (record) sol.part_two.push_back({r_corner, corner[0], corner[1]});
     // I1 along Part II: at the accepted steps and at the corner.
     auto track = [&](double r, double i1) {
@@ -250,6 +266,7 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
     sol.tension_ratio = sol.edge_s1 / membrane_stress(law_, l3, l3).s1;
   }
   sol.integrated = true;
+  sol.shooting_tol = s_.shooting_tol;
   sol.status = std::abs(sol.residual) <= s_.shooting_tol ? Status::Converged : Status::NoConvergence;
   if (!sol.ok())
     sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);
@@ -341,21 +358,16 @@ std::optional<ScaledSolution> ForceSolver<Law>::puncture_at_corner(double i1c) c
                                      return true;
                                    });
     if (!ok || r_top < 0.0 || r_top == r_corner) return std::nullopt;
-    IntegrationStepper<PartTwoState> rk;
-    auto state_at = [&](double r) {
-      PartTwoState out;
-      rk.do_step(side, y_prev, r_prev, out, r - r_prev);
-      return out;
+    // Inside the last step, re-integrated adaptively from its start; a trial that cannot be
+    // integrated (locking) counts as past the top.
+    auto q_at = [&](double r) {
+      const auto y_r = step_or_advance(side, y_prev, r_prev, r, s_.integration);
+      return y_r ? q(r, *y_r) : 1.0;
     };
     std::uintmax_t iterations = 100;
-    try {  // a trial step of the root search may leave the material's domain
-      const auto bracket = boost::math::tools::toms748_solve(
-          [&](double r) { return q(r, state_at(r)); }, r_prev, r_top,
-          boost::math::tools::eps_tolerance<double>(50), iterations);
-      return s_.a / (0.5 * (bracket.first + bracket.second));
-    } catch (const IntegrationFailure&) {
-      return std::nullopt;
-    }
+    const auto bracket = boost::math::tools::toms748_solve(
+        q_at, r_prev, r_top, boost::math::tools::eps_tolerance<double>(50), iterations);
+    return s_.a / (0.5 * (bracket.first + bracket.second));
   };
   // With R s1 unchanged up the side (no friction, ring balance) the force is R s1 at the corner
   // and the position of the top is left to the ordinary shooting at that force.
@@ -431,6 +443,7 @@ ScaledSolution ForceSolver<Law>::stick(double f) const {
   }
   sol = assemble(Configuration::Stick, f, *root, true);
   sol.evaluations += evals;
+  accept_collapsed_bracket(sol);
   return sol;
 }
 
@@ -485,6 +498,7 @@ ScaledSolution ForceSolver<Law>::slip(double f) const {
   }
   sol = assemble(c, f, *root, true);
   sol.evaluations += evals;
+  accept_collapsed_bracket(sol);
   return sol;
 }
 

@@ -5,6 +5,7 @@
 // retried smaller, and a state that cannot go on ends the integration with `false`.
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <optional>
 
 namespace puncture::detail {
 
@@ -51,6 +52,31 @@ bool integrate_part(const System& system, State& x, double r_begin, double r_end
     if (std::abs(dr) < min_step) return false;
   }
   return true;
+}
+
+// The state at r_end from (r_begin, x), integrated adaptively; empty if it cannot be reached.
+template <class State, class System>
+std::optional<State> advance(const System& system, State x, double r_begin, double r_end,
+                             const IntegrationSettings& settings) {
+  if (r_end == r_begin) return x;
+  if (!integrate_part(system, x, r_begin, r_end, settings, [](double, const State&) { return true; }))
+    return std::nullopt;
+  return x;
+}
+
+// Within an accepted step: one Runge-Kutta step from its start (cheap, and as accurate as the
+// step itself), or, if a stage of that step leaves the material's domain, an adaptive advance.
+template <class State, class System>
+std::optional<State> step_or_advance(const System& system, const State& x, double r_begin,
+                                     double r_end, const IntegrationSettings& settings) {
+  try {
+    IntegrationStepper<State> rk;
+    State out;
+    rk.do_step(system, x, r_begin, out, r_end - r_begin);
+    return out;
+  } catch (const IntegrationFailure&) {
+    return advance(system, x, r_begin, r_end, settings);
+  }
 }
 
 }  // namespace puncture::detail

@@ -345,12 +345,20 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
     out.stick_slip.force_stuck_n = boundary.force_stuck_n;
   }
   // Part II onset in the slip stage.
+  // Part II onset on the sliding branch; a membrane held past that depth slides straight into
+  // the configuration with Part II at the switch.
   std::optional<detail::ScaledSolution> onset;
   if (boundary.first_stage == Stage::Slip || boundary.switches) {
     onset = detail::part_two_onset(p, o);
     if (onset) {
       out.part_two_onset_depth_mm = onset->depth * big_a;
       out.part_two_onset_force_n = onset->f * scale;
+      if (boundary.switches && onset->depth * big_a < boundary.depth_mm) {
+        out.part_two_onset_at_switch = true;
+        out.part_two_onset_depth_mm = boundary.depth_mm;
+        out.part_two_onset_force_n.reset();  // the sliding force at the switch, set below
+        onset.reset();
+      }
     }
   }
   const detail::ScaledSettings settings = detail::scaled_settings(p, o);
@@ -361,6 +369,12 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
       },
       p.material.law);
   if (!ok) return out;
+  if (out.part_two_onset_at_switch) {
+    if (out.stick_slip.occurs)
+      out.part_two_onset_force_n = out.stick_slip.force_sliding_n;
+    else  // the curve ends before the switch
+      out.part_two_onset_depth_mm.reset();
+  }
   out.status = Status::Converged;
   return out;
 }

@@ -1,8 +1,6 @@
 #pragma once
-// Where Part II (membrane wrapped on the indenter's side) first appears along a loading curve.
-// The library locates the onset on the sliding branch alone; when the membrane is still held
-// there (a stick stage lasting past that depth), Part II appears only when it starts to slide,
-// at the stick -> slip switch.
+// Where Part II (membrane wrapped on the indenter's side) first appears along a loading curve:
+// on the sliding branch, or at the stick -> slip switch when the membrane is held past that depth.
 #include <optional>
 
 #include "puncture/loading_curve.hpp"

@@ -58,6 +58,7 @@ struct LoadingCurve {
   StickSlipSwitch stick_slip;
   std::optional<double> part_two_onset_depth_mm;  // where Part II appears in the slip stage
   std::optional<double> part_two_onset_force_n;
+  bool part_two_onset_at_switch = false;  // Part II appears as the held membrane starts sliding
   PuncturePrediction puncture;
   bool ok() const { return status == Status::Converged; }
 };
