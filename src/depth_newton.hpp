@@ -38,7 +38,7 @@ class DepthNewton {
     if (!sol.integrated) return std::nullopt;
     Eigen::Vector2d r = value(sol);
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-      if (iteration > 0 && converged(r)) return sol;
+      if (iteration > 0 && converged(r)) return accepted(std::move(sol));
       if (!have_jacobian_) {
         if (!finite_difference_jacobian(c, x, r, depth)) return std::nullopt;
       }
@@ -61,7 +61,7 @@ class DepthNewton {
       r = r_next;
       sol = std::move(next);
     }
-    if (converged(r)) return sol;
+    if (converged(r)) return accepted(std::move(sol));
     have_jacobian_ = false;
     return std::nullopt;
   }
@@ -88,6 +88,13 @@ class DepthNewton {
     have_jacobian_ = jacobian.allFinite() && std::abs(jacobian.determinant()) > 0.0;
     if (have_jacobian_) lu_.compute(jacobian);
     return have_jacobian_;
+  }
+
+  // The solution passed Newton's test on both residuals (its own tolerance).
+  static ScaledSolution accepted(ScaledSolution sol) {
+    sol.status = Status::Converged;
+    sol.message.clear();
+    return sol;
   }
 
   ScaledSolution evaluate(Configuration c, const Eigen::Vector2d& x) const {

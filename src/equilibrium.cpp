@@ -181,8 +181,11 @@ Equilibrium to_physical(const Problem& p, const ScaledSolution& sol, Stage stage
   e.corner_slope_rad = sol.corner_slope;
   e.corner_tension_ratio = sol.tension_ratio;
   e.max_first_invariant = max_first_invariant(sol);
-  e.max_first_invariant_reference_radius_mm =
-      (sol.max_i1 >= e.max_first_invariant ? sol.max_i1_r : sol.r_corner) * big_a;
+  // Where I1 is largest; a tie with Part III (mu = 0) is reported at the corner's Part I/II side.
+  const bool in_part_three = sol.max_i1 < e.max_first_invariant;
+  e.max_first_invariant_reference_radius_mm = (in_part_three ? sol.r_corner : sol.max_i1_r) * big_a;
+  e.max_first_invariant_radius_mm =
+      (in_part_three ? sol.r_corner * sol.part_three_stretch : sol.max_i1_radius) * big_a;
   e.clamp_residual = std::abs(sol.residual);
   e.shooting_evaluations = sol.evaluations;
   if (options.record_fields && sol.ok()) e.fields = fields_of(p, sol);

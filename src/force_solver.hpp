@@ -42,7 +42,8 @@ struct ScaledSolution {
   double tension_ratio = 1.0;    // s1 outside the corner / s1 in Part III
   double edge_s1 = 0.0;          // s1 at the inner end of Part I
   double max_i1 = 3.0;           // largest I1 in Parts I and II
-  double max_i1_r = 0.0;
+  double max_i1_r = 0.0;         // ... at this reference radius
+  double max_i1_radius = 0.0;    // ... and this current radius
   double residual = 0.0;         // lambda2(A) - 1
   int evaluations = 0;
   bool integrated = false;       // every part was integrated (residual and depth are defined)
@@ -104,6 +105,7 @@ class ForceSolver {
     double height = 0.0;
     double max_i1 = 0.0;
     double max_i1_r = 0.0;
+    double max_i1_radius = 0.0;  // current radius there
   };
   PartOneRun run_part_one(double f, double r0, PartOneState x0,
                           std::vector<PartOneSample>* samples) const;

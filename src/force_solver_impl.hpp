@@ -73,8 +73,9 @@ typename ForceSolver<Law>::PartOneRun ForceSolver<Law>::run_part_one(
   if (!run.ok && last_l2 < 1.0) run.turned_back = true;
   if (run.ok) {
     IntegrationStepper<PartOneState> rk;
+    auto found = i1_max.sampled();
     try {
-      std::tie(run.max_i1, run.max_i1_r) = i1_max.refine(
+      found = i1_max.refine(
           [&](double ra, const PartOneState& xa, double rb) {
             PartOneState out;
             rk.do_step(system, xa, ra, out, rb - ra);
@@ -82,8 +83,10 @@ typename ForceSolver<Law>::PartOneRun ForceSolver<Law>::run_part_one(
           },
           [](double, const PartOneState& y) { return first_invariant(y[1], y[2]); });
     } catch (const IntegrationFailure&) {
-      std::tie(run.max_i1, run.max_i1_r) = std::pair(i1_max.value(), i1_max.where());
     }
+    run.max_i1 = found.value;
+    run.max_i1_r = found.r;
+    run.max_i1_radius = found.state[2] * found.r;  // r = lambda2 R
   }
   run.residual = run.turned_back ? kTurnedBack : x[2] - 1.0;
   run.height = x[3];
@@ -167,6 +170,7 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
   sol.edge_s1 = membrane_stress(law_, st->state[1], st->state[2]).s1;
   sol.max_i1 = run.max_i1;
   sol.max_i1_r = run.max_i1_r;
+  sol.max_i1_radius = run.max_i1_radius;
   sol.depth = run.height;
   if (c == Configuration::Stick) {
     sol.r_corner = s_.a;
@@ -208,45 +212,59 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
                                    });
     if (!ok || r_hit < 0.0) {
       sol.status = Status::BeyondLocking;
-      sol.message = "Part II reaches the locking stretch before meeting the capstan condition";
+      sol.message = std::isfinite(max_i1_)
+                        ? "Part II reaches the locking stretch before meeting the capstan condition"
+                        : "Part II never meets the capstan condition: the force is beyond the "
+                          "membrane's limit load";
       return sol;
     }
-    if (r_hit == st->r0) {
-      sol.message = "no Part II at this force and boundary stretch";
-      return sol;  // the capstan condition fails already at the top: no Part II here
-    }
-    // Locate the corner inside the last step, re-integrating adaptively from the last accepted
-    // state (near locking a single long step may leave the material's domain).  A trial that
-    // cannot be integrated lies past the corner, towards locking: the gap counts as negative.
-    auto gap_at = [&](double r) {
-      const auto y_r = step_or_advance(side, y_prev, r_prev, r, s_.integration);
-      return y_r ? corner_gap(r, *y_r) : -1.0;
+    // Where the corner is: at the top when the capstan condition holds there already (exactly at
+    // the onset, to round-off: Part II of zero length; beyond that there is no Part II at this
+    // force and top stretch), else inside the last step, located by re-integrating adaptively
+    // from the last accepted state (near locking a single long step may leave the material's
+    // domain).  A trial that cannot be integrated lies past the corner, towards locking: the gap
+    // counts as negative there.
+    double r_corner = st->r0;
+    std::optional<PartTwoState> corner_state = y_prev;
+    const auto gap_scale = [&](double r) {
+      return 1e-8 * capstan * membrane_stress(law_, s_.a / r, s_.a / r).s1;
     };
-    std::uintmax_t iterations = 100;
-    const auto bracket = boost::math::tools::toms748_solve(
-        gap_at, r_hit, r_prev, boost::math::tools::eps_tolerance<double>(50), iterations);
-    const double r_corner = 0.5 * (bracket.first + bracket.second);
-    const auto corner_state = step_or_advance(side, y_prev, r_prev, r_corner, s_.integration);
-    if (!corner_state || !(std::abs(corner_gap(r_corner, *corner_state)) <=
-                           1e-8 * capstan *
-                               membrane_stress(law_, s_.a / r_corner, s_.a / r_corner).s1)) {
-      sol.status = Status::BeyondLocking;
-      sol.message = "the corner of Part II lies beyond the material's locking limit";
-      return sol;
+    if (r_hit == st->r0) {
+      if (!(corner_gap(st->r0, y_prev) >= -0.1 * gap_scale(st->r0))) {
+        sol.message = "no Part II at this force and boundary stretch";
+        return sol;
+      }
+    } else {
+      auto gap_at = [&](double r) {
+        const auto y_r = step_or_advance(side, y_prev, r_prev, r, s_.integration);
+        return y_r ? corner_gap(r, *y_r) : -1.0;
+      };
+      std::uintmax_t iterations = 100;
+      const auto bracket = boost::math::tools::toms748_solve(
+          gap_at, r_hit, r_prev, boost::math::tools::eps_tolerance<double>(50), iterations);
+      r_corner = 0.5 * (bracket.first + bracket.second);
+      corner_state = step_or_advance(side, y_prev, r_prev, r_corner, s_.integration);
+      if (!corner_state ||
+          !(std::abs(corner_gap(r_corner, *corner_state)) <= gap_scale(r_corner))) {
+        sol.status = Status::BeyondLocking;
+        sol.message = "the corner of Part II lies beyond the material's locking limit";
+        return sol;
+      }
     }
     const PartTwoState corner = *corner_state;
     IntegrationStepper<PartTwoState> rk;
     if (record) sol.part_two.push_back({r_corner, corner[0], corner[1]});
     // I1 along Part II: at the accepted steps and at the corner.
-    auto track = [&](double r, double i1) {
+    auto track = [&](double r, double i1) {  // on the side: current radius a
       if (i1 > sol.max_i1) {
         sol.max_i1 = i1;
         sol.max_i1_r = r;
+        sol.max_i1_radius = s_.a;
       }
     };
     track(r_corner, first_invariant(corner[0], s_.a / r_corner));
     try {
-      const auto [i1, r] = side_max.refine(
+      const auto [i1, r, state] = side_max.refine(
           [&](double ra, const PartTwoState& ya, double rb) {
             PartTwoState out;
             rk.do_step(side, ya, ra, out, rb - ra);
@@ -255,7 +273,7 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
           [&](double r, const PartTwoState& y) { return first_invariant(y[0], s_.a / r); });
       track(r, i1);
     } catch (const IntegrationFailure&) {
-      track(side_max.where(), side_max.value());
+      track(side_max.sampled().r, side_max.sampled().value);
     }
     sol.r_corner = r_corner;
     sol.part_three_stretch = s_.a / r_corner;
@@ -485,7 +503,11 @@ ScaledSolution ForceSolver<Law>::slip(double f) const {
     const double g_low = with_two(lowest).value_or(kBeyondDomain);
     if (g_low >= 0.0) {
       sol.status = Status::BeyondLocking;
-      sol.message = "the force is beyond what the membrane on the indenter's side can carry";
+      sol.message = std::isfinite(max_i1_)
+                        ? "the force is beyond what the membrane can carry before the material "
+                          "locks"
+                        : "the force is beyond the membrane's limit load (this law's stress "
+                          "under the tip grows too slowly with stretch to carry it)";
       return sol;
     }
     root = shoot_increasing(with_two, lowest, g_low, *onset, s_.max_iterations);

@@ -32,26 +32,31 @@ class InteriorMaximum {
     last_state_ = x;
   }
 
+  struct Maximum {
+    double value;
+    double r;
+    State state;
+  };
+
   // step(r0, x0, r) integrates one step from (r0, x0) to r; value(r, x) is the quantity.
-  // Returns the maximum and where it is.
   template <class Step, class Value>
-  std::pair<double, double> refine(Step&& step, Value&& value) const {
-    std::pair<double, double> best{best_value_, best_r_};
+  Maximum refine(Step&& step, Value&& value) const {
+    Maximum best{best_value_, best_r_, best_state_};
     if (!has_before_ || !has_after_) return best;  // the maximum sits at an end of the part
     auto search = [&](double r0, const State& x0, double r1) {
       const auto [lo, hi] = std::minmax(r0, r1);
       std::uintmax_t iterations = 60;
       const auto found = boost::math::tools::brent_find_minima(
           [&](double r) { return -value(r, step(r0, x0, r)); }, lo, hi, 40, iterations);
-      if (-found.second > best.first) best = {-found.second, found.first};
+      if (-found.second > best.value) best = {-found.second, found.first, step(r0, x0, found.first)};
     };
     search(before_r_, before_state_, best_r_);
     search(best_r_, best_state_, after_r_);
     return best;
   }
 
-  double value() const { return best_value_; }
-  double where() const { return best_r_; }
+  Maximum sampled() const { return {best_value_, best_r_, best_state_}; }
+
 
  private:
   double best_value_ = -std::numeric_limits<double>::infinity();

@@ -38,12 +38,16 @@ std::optional<double> first_force_where(const Problem& p, Stage stage, double f_
 std::string crack_location(const detail::ScaledSolution& sol) {
   const double l3 = sol.part_three_stretch;
   const double i1_tip = 2.0 * l3 * l3 + 1.0 / (l3 * l3 * l3 * l3);
-  if (i1_tip >= sol.max_i1) return "Part III, under the indenter's tip";
+  if (i1_tip > sol.max_i1 * (1.0 + 1e-9)) return "Part III, under the indenter's tip";
   const double tol = 1e-9;
-  if (std::abs(sol.max_i1_r - sol.r_corner) <= tol)
-    return sol.configuration == Configuration::SlipWithPartTwo
-               ? "Part II at the indenter's corner"
-               : "Part I at the indenter's corner";
+  if (std::abs(sol.max_i1_r - sol.r_corner) <= tol) {
+    std::string where = sol.configuration == Configuration::SlipWithPartTwo
+                            ? "Part II at the indenter's corner"
+                            : "Part I at the indenter's corner";
+    if (i1_tip >= sol.max_i1 * (1.0 - 1e-9))
+      where += " (without friction Part III, under the tip, is as stretched)";
+    return where;
+  }
   if (sol.configuration == Configuration::SlipWithPartTwo && sol.max_i1_r < sol.r_top)
     return "Part II, on the indenter's side";
   return "Part I, off the indenter";
@@ -167,11 +171,7 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
   out.crack_reference_radius_mm = out.state.max_first_invariant_reference_radius_mm;
   out.crack_location = crack_location(sol);
   if (at_switch) out.crack_location += " (at the stick -> slip switch)";
-  // Current radius of the crack site: r = lambda2 R; at the corner it is the indenter radius.
-  out.crack_radius_mm = out.crack_reference_radius_mm;
-  for (std::size_t i = 0; i < out.state.fields.size(); ++i)
-    if (out.state.fields.reference_radius_mm[i] == out.crack_reference_radius_mm)
-      out.crack_radius_mm = out.state.fields.radius_mm[i];
+  out.crack_radius_mm = out.state.max_first_invariant_radius_mm;
   return out;
 }
 
@@ -213,7 +213,7 @@ bool follow_curve(const Problem& p, const Law& law, const detail::ScaledSettings
   const double scale = force_scale_n(p);
   const double big_a = p.geometry.clamp_radius_mm;
   const detail::ForceSolver<Law> solver(law, settings);
-  detail::DepthNewton<Law> newton(solver, o.shooting_tol);
+  detail::DepthNewton<Law> newton(solver, o.curve_tol);
   Predictor predictor;
   Stage segment_stage = boundary.first_stage;
   Configuration last_configuration = Configuration::Unloaded;

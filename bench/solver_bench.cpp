@@ -1,0 +1,66 @@
+// Speed of the solver on the paper's default membrane (2 mm indenter, lubricated).
+//   BM_PartOneIntegration  the baseline: one integration of Part I at a converged state, the
+//                          unit of work every shooting repeats
+//   BM_EquilibriumAtForce  one equilibrium at a prescribed force (bracketing shooting)
+//   BM_EquilibriumAtDepth  one equilibrium at a prescribed depth (nested bracketing)
+//   BM_PunctureDefault     the puncture point alone
+//   BM_LoadingCurveDefault the loading curve, 200 depth points from zero to puncture
+// Compare them as ratios to the baseline: the machines are noisy, the ratios much less so.
+#include <benchmark/benchmark.h>
+
+#include "force_solver.hpp"
+#include "puncture/loading_curve.hpp"
+#include "scaled_problem.hpp"
+
+namespace {
+
+using namespace puncture;
+
+void BM_PartOneIntegration(benchmark::State& state) {
+  const Problem problem;
+  SolverOptions options;
+  options.record_fields = false;
+  const auto settings = detail::scaled_settings(problem, options);
+  const Gent& law = std::get<Gent>(problem.material.law);
+  const detail::ForceSolver<Gent> solver(law, settings);
+  const auto sol = solver.slip(0.2);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(solver.assemble(sol.configuration, sol.f, sol.parameter, false));
+}
+BENCHMARK(BM_PartOneIntegration)->Unit(benchmark::kMicrosecond);
+
+void BM_EquilibriumAtForce(benchmark::State& state) {
+  const Problem problem;
+  for (auto _ : state) benchmark::DoNotOptimize(solve_at_force(problem, 0.4, Stage::Slip));
+}
+BENCHMARK(BM_EquilibriumAtForce)->Unit(benchmark::kMicrosecond);
+
+void BM_EquilibriumAtDepth(benchmark::State& state) {
+  const Problem problem;
+  for (auto _ : state) benchmark::DoNotOptimize(solve_at_depth(problem, 20.0, Stage::Slip));
+}
+BENCHMARK(BM_EquilibriumAtDepth)->Unit(benchmark::kMillisecond);
+
+void BM_PunctureDefault(benchmark::State& state) {
+  const Problem problem;
+  for (auto _ : state) benchmark::DoNotOptimize(predict_puncture(problem));
+}
+BENCHMARK(BM_PunctureDefault)->Unit(benchmark::kMillisecond);
+
+void BM_LoadingCurveDefault(benchmark::State& state) {
+  const Problem problem;
+  CurveOptions curve;
+  curve.points = 200;
+  std::size_t points = 0;
+  for (auto _ : state) {
+    const auto result = loading_curve(problem, curve);
+    if (!result.ok()) state.SkipWithError(result.message.c_str());
+    points = result.points.size();
+  }
+  state.counters["points"] = static_cast<double>(points);
+}
+BENCHMARK(BM_LoadingCurveDefault)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
