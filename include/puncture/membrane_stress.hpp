@@ -38,15 +38,17 @@ constexpr bool depends_on_i2() {
 
 template <class Law>
 MembraneStress membrane_stress(const Law& law, double l1, double l2) {
-  const double l1s = l1 * l1, l2s = l2 * l2;
-  const double l3s = 1.0 / (l1s * l2s);
+  // Two divisions only: this runs at every stage of every integration step.
+  const double il1 = 1.0 / l1, il2 = 1.0 / l2;
+  const double l1s = l1 * l1, l2s = l2 * l2, il1s = il1 * il1, il2s = il2 * il2;
+  const double l3s = il1s * il2s;
   const double i1 = l1s + l2s + l3s;
-  const double i2 = depends_on_i2<Law>() ? l1s * l2s + 1.0 / l1s + 1.0 / l2s : 3.0;
+  const double i2 = depends_on_i2<Law>() ? l1s * l2s + il1s + il2s : 3.0;
   const auto d = law.derivatives(i1, i2);
   // First and second derivatives of I1 with respect to the two in-plane stretches.
-  const double a1 = 2.0 * (l1 - l3s / l1), a2 = 2.0 * (l2 - l3s / l2);
-  const double a11 = 2.0 + 6.0 * l3s / l1s, a22 = 2.0 + 6.0 * l3s / l2s;
-  const double a12 = 4.0 * l3s / (l1 * l2);
+  const double a1 = 2.0 * (l1 - l3s * il1), a2 = 2.0 * (l2 - l3s * il2);
+  const double a11 = 2.0 + 6.0 * l3s * il1s, a22 = 2.0 + 6.0 * l3s * il2s;
+  const double a12 = 4.0 * l3s * il1 * il2;
   MembraneStress s;
   s.s1 = d.w1 * a1;
   s.s2 = d.w1 * a2;
@@ -56,8 +58,8 @@ MembraneStress membrane_stress(const Law& law, double l1, double l2) {
   s.i1 = i1;
   if constexpr (depends_on_i2<Law>()) {
     // ... and of I2.
-    const double b1 = 2.0 * (l1 * l2s - 1.0 / (l1s * l1)), b2 = 2.0 * (l1s * l2 - 1.0 / (l2s * l2));
-    const double b11 = 2.0 * l2s + 6.0 / (l1s * l1s), b22 = 2.0 * l1s + 6.0 / (l2s * l2s);
+    const double b1 = 2.0 * (l1 * l2s - il1s * il1), b2 = 2.0 * (l1s * l2 - il2s * il2);
+    const double b11 = 2.0 * l2s + 6.0 * il1s * il1s, b22 = 2.0 * l1s + 6.0 * il2s * il2s;
     const double b12 = 4.0 * l1 * l2;
     s.s1 += d.w2 * b1;
     s.s2 += d.w2 * b2;

@@ -24,7 +24,8 @@ struct Gent {
       const double inf = std::numeric_limits<double>::infinity();
       return {inf, inf, 0.0, inf, 0.0, 0.0};
     }
-    return {-0.5 * j_lim * std::log(x), 0.5 / x, 0.0, 0.5 / (j_lim * x * x), 0.0, 0.0};
+    const double w1 = 0.5 / x;
+    return {-0.5 * j_lim * std::log(x), w1, 0.0, 2.0 * w1 * w1 / j_lim, 0.0, 0.0};
   }
 };
 
