@@ -79,8 +79,10 @@ TEST_P(Curve, DepthAndForceIncreaseWithinEachStage) {
 }
 
 // The curve ends at puncture: its last point is at the puncture depth, where the largest I1
-// equals the critical value.  A point is converged to 1e-8 relative in force and d ln I1 /
-// d ln F is of order one there, so I1 is within ~1e-6 of I1c (~1e-8 relative of 95.2).
+// equals the critical value to 1e-6 (1e-8 relative).  The curve solves its last point at the
+// puncture depth to Newton residuals of 1e-9; I1 then misses I1c by at most 2e-8 on the Gent
+// curves and by 4e-7 on the neo-Hookean one, where near puncture I1 grows ~17 times faster than
+// the force (see the 0.1% bracket below).
 TEST_P(Curve, EndsAtPuncture) {
   const auto& last = curve_.points.back();
   const double i1c = GetParam().problem.critical_i1;
