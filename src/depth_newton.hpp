@@ -31,8 +31,12 @@ class DepthNewton {
     auto value = [&](const ScaledSolution& s) {
       return Eigen::Vector2d(s.residual, s.depth - depth);
     };
+    // The clamp residual is a hoop stretch minus 1: near zero load, where every stretch minus 1
+    // is ~ p - p0, it is judged relative to that scale so the force stays accurate relatively.
     auto converged = [&](const Eigen::Vector2d& r) {
-      return std::abs(r[0]) <= tol_ && std::abs(r[1]) <= tol_ * std::max(depth, 1e-3);
+      const double stretch_scale = std::min(1.0, std::exp(x[1]));
+      return std::abs(r[0]) <= tol_ * stretch_scale &&
+             std::abs(r[1]) <= tol_ * std::max(depth, 1e-3);
     };
     ScaledSolution sol = evaluate(c, x);
     if (!sol.integrated) return std::nullopt;

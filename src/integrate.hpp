@@ -40,7 +40,8 @@ bool integrate_part(const System& system, State& x, double r_begin, double r_end
     if (++attempts > settings.max_steps) return false;
     if (settings.max_step > 0.0 && std::abs(dr) > settings.max_step)
       dr = direction * settings.max_step;
-    if (direction * (r + dr - r_end) > 0.0) dr = r_end - r;
+    // Land exactly on the end, never leaving a sliver of a step behind.
+    if (direction * (r + dr - r_end) > -1e-12 * std::abs(span)) dr = r_end - r;
     try {
       if (stepper.try_step(system, x, r, dr) == odeint::success) {
         if (!observe(r, x)) return true;  // the observer found what it looked for
@@ -49,7 +50,7 @@ bool integrate_part(const System& system, State& x, double r_begin, double r_end
       dr *= 0.25;
       if constexpr (requires { stepper.reset(); }) stepper.reset();
     }
-    if (std::abs(dr) < min_step) return false;
+    if (std::abs(dr) < min_step && direction * (r_end - r) > 1e-15 * std::abs(span)) return false;
   }
   return true;
 }

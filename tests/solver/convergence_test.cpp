@@ -83,10 +83,6 @@ TEST(Convergence, DefaultOptionsAreAccurateTo1e8) {
 // SolverOptions documents that the defaults give every point of a loading curve to better than
 // 1e-8 relative: the near-zero depths included.
 TEST(Convergence, DefaultOptionsMeetDocumentedAccuracyAtEveryPoint) {
-  GTEST_SKIP() << "solver bug: with the default curve_tol (1e-9, commit b6b0aba) the point at "
-                  "depth 0.5427 mm of the 200-point default curve to 36 mm has F = "
-                  "1.952474932e-05 N against 1.952474968e-05 N (reference), -1.85e-8 relative, "
-                  "beyond the 1e-8 that SolverOptions promises for every point";
   const double error = worst_relative_error(points(SolverOptions{}), 0.0);
   EXPECT_LT(error, 1e-8);
   record("error_at_defaults_all_points", error);

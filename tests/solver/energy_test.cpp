@@ -22,7 +22,6 @@ struct EnergyCase {
   Stage stage;
   double depth_mm;
   Configuration expected;
-  std::string known_bug = {};  // non-empty: skipped, for this solver bug
 };
 void PrintTo(const EnergyCase& c, std::ostream* os) { *os << c.name; }
 
@@ -38,14 +37,6 @@ class EnergyIdentity : public ::testing::TestWithParam<EnergyCase> {};
 // Frictionless sliding (mu' = 0: the corner and the side do no work) before and after the onset
 // of Part II (13.4 mm), and the fully held membrane (StickRule::Always: the material at the
 // indenter's edge does not move relative to it), puncture at 33.8 mm and 118 mm respectively.
-// The integration's end-of-interval bug (robustness_test, RecordedFieldsAtAnyDensity): at 10 mm
-// the recorded solve with 1000 field points fails, so the same configuration is also checked at
-// 8 mm.
-const char* const kSliverBug =
-    "solver bug: solve_at_depth(mu' = 0, 10 mm, Slip, field_points = 1000) fails with 'Part I "
-    "cannot be integrated to the clamp (material locks)': integrate_part (src/integrate.hpp) "
-    "reports failure after a successful last step shorter than its minimum step";
-
 INSTANTIATE_TEST_SUITE_P(
     Energy, EnergyIdentity,
     ::testing::Values(
@@ -53,8 +44,7 @@ INSTANTIATE_TEST_SUITE_P(
                    frictionless_sliding(),
                    Stage::Slip,
                    10.0,
-                   Configuration::SlipWithoutPartTwo,
-                   kSliverBug},
+                   Configuration::SlipWithoutPartTwo},
         EnergyCase{"SlidingWithoutPartTwoAt8mm",
                    frictionless_sliding(),
                    Stage::Slip,
@@ -150,7 +140,6 @@ Equilibrium finely_sampled(const Problem& p, double depth_mm, Stage stage) {
 // The solver's 1e-8 relative accuracy of each force and state adds 2e-8 relative.
 TEST_P(EnergyIdentity, WorkEqualsStoredEnergy) {
   const EnergyCase& c = GetParam();
-  if (!c.known_bug.empty()) GTEST_SKIP() << c.known_bug;
   const auto curve = curve_to(c.problem, c.depth_mm);
   ASSERT_TRUE(curve.ok()) << curve.message;
   ASSERT_FALSE(curve.stick_slip.occurs);

@@ -138,13 +138,6 @@ TEST(RandomInputs, EveryResultIsFiniteOrExplained) {
 // step) must not decide whether an equilibrium is found: held and sliding states at a few
 // forces, with 200 to 2000 field points.
 TEST(FieldDensity, RecordedFieldsAtAnyDensity) {
-  GTEST_SKIP() << "solver bug: e.g. solve_at_force(default problem, 0.3 N, Stage::Stick) with "
-                  "field_points = 1100, or (mu' = 0, 0.0675084045723 N, Stage::Slip) with "
-                  "field_points = 1000, returns NoConvergence 'Part I cannot be integrated to the "
-                  "clamp (material locks)' though it converges with 200 points: with the step cap "
-                  "the accumulated R stops ~1.5e-15 short of the clamp, integrate_part "
-                  "(src/integrate.hpp) takes that sliver as a last step, succeeds, and then fails "
-                  "its |dr| < 1e-14 * span minimum-step check";
   for (double mu : {0.0, 0.18}) {
     const Problem p = paper_problem(Gent{125.0}, mu);
     for (double force : {0.0675084045723, 0.3}) {
