@@ -42,7 +42,7 @@ class DepthNewton {
     if (!sol.integrated) return std::nullopt;
     Eigen::Vector2d r = value(sol);
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-      if (iteration > 0 && converged(r)) return accepted(std::move(sol));
+      if (converged(r)) return accepted(std::move(sol));
       if (!have_jacobian_) {
         if (!finite_difference_jacobian(c, x, r, depth)) return std::nullopt;
       }
