@@ -2,6 +2,9 @@
 // Calibration: the model's parameters from the paper's experiments.
 //
 //   critical I1  from the marks of inflation (bulge) tests at burst        (paper §2.3)
+//   friction mu' from the hole a dry membrane leaves: its size gives the Part III stretch
+//                (indenter diameter / hole diameter)                        (§4.2)
+//   J_lim        from the force of one puncture test and the critical I1    (§4.1)
 //   G (J_lim, alpha) from a uniaxial tensile test, by least squares        (§4.1, Fig. 11)
 //
 // Inputs in mm, N and MPa like the rest of the library.  Invalid inputs throw
@@ -12,7 +15,7 @@
 #include <vector>
 
 #include "puncture/csv.hpp"
-#include "puncture/material.hpp"
+#include "puncture/loading_curve.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture {
@@ -49,6 +52,107 @@ CriticalI1Estimate critical_i1_from_inflation(const std::vector<BurstTest>& test
 // as well as the column).
 std::vector<BurstTest> burst_tests_from_table(const CsvTable& table,
                                               std::optional<double> mark_radius_mm);
+
+// ---------------------------------------------------------------------------------------------
+// One model parameter inverted from one measured value by a scan and Boost's TOMS 748.
+
+struct Inversion {
+  bool found = false;
+  std::string message;            // why not found, or a warning (several solutions)
+  double value = 0.0;             // the parameter, when found
+  std::vector<double> solutions;  // every solution in the searched range (value is the first)
+  int evaluations = 0;            // model evaluations in the refinement
+};
+
+// A sampled point of the model on the scan, for transparency: `model` is empty where the
+// solver failed.
+struct ScanSample {
+  double parameter = 0.0;
+  std::optional<double> model;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Friction from the size of the hole (§4.2).  A dry membrane punctured by the flat tip leaves a
+// round hole; the ratio indenter diameter / hole diameter is the Part III stretch at puncture.
+
+enum class HoleMethod {
+  // The paper's: at the measured puncture force, mu' such that the Part III stretch of the
+  // sliding equilibrium (solve_at_force, Stage::Slip) equals the ratio.
+  AtMeasuredForce,
+  // Force-free: mu' such that the predicted puncture (predict_puncture) has the ratio as its
+  // Part III stretch.  With the crack at the corner that stretch depends only on the material,
+  // mu' and the critical I1 (docs/model.md §8), not on the force or the indenter.
+  AtPredictedPuncture,
+};
+
+struct HoleMeasurement {
+  double ratio = 0.0;                      // indenter diameter / hole diameter (the paper: 1.58)
+  double ratio_sd = 0.0;                   // its standard deviation (the paper: 0.14); 0 for none
+  std::optional<double> puncture_force_n;  // measured puncture force [N]; AtMeasuredForce only
+};
+
+struct FrictionOptions {
+  double max_friction = 10.0;  // the model's limit (validation_errors)
+  SolverOptions solver{};      // record_fields is switched off
+};
+
+struct FrictionEstimate {
+  HoleMethod method = HoleMethod::AtMeasuredForce;
+  double force_n = 0.0;  // AtMeasuredForce: the measured force
+  // What the model can reach: the Part III stretch falls as the friction grows.
+  // (empty where the solver failed)
+  std::optional<double> stretch_at_zero_friction;  // the largest
+  std::optional<double> stretch_at_max_friction;   // the smallest
+  double max_friction = 0.0;
+  Inversion friction;                     // for the ratio
+  Inversion friction_for_ratio_plus_sd;   // ratio + sd: the lower end of the interval
+  Inversion friction_for_ratio_minus_sd;  // ratio - sd: the upper end
+  // At the fitted friction (when found and the solver converged there):
+  std::optional<double> max_first_invariant;  // largest I1 at the force (AtMeasuredForce): above
+                                              // the critical I1, the model punctures earlier
+  std::optional<double> puncture_force_n;     // AtPredictedPuncture: the predicted force [N]
+  std::optional<double> puncture_depth_mm;    // AtPredictedPuncture: the predicted depth [mm]
+  std::vector<ScanSample> scan;               // (mu', Part III stretch)
+};
+
+// `problem` supplies everything but the friction (ignored).  Throws std::invalid_argument for
+// an invalid problem, a ratio that is not finite and > 0, a negative sd, or a missing or
+// non-positive force with AtMeasuredForce.
+FrictionEstimate friction_from_hole(const Problem& problem, const HoleMeasurement& hole,
+                                    HoleMethod method, const FrictionOptions& options = {});
+
+// ---------------------------------------------------------------------------------------------
+// J_lim from one puncture test (§4.1): the Gent J_lim for which the predicted puncture force
+// (the largest I1 reaching the critical I1) equals the measured one.  The predicted force falls
+// from infinity as J_lim -> critical I1 - 3 to the neo-Hookean force as J_lim -> infinity.
+
+struct JLimOptions {
+  // The scan: J_lim = (critical I1 - 3) (1 + g), g geometric in [min_gap, max_gap].
+  double min_gap = 1e-5;
+  double max_gap = 1e4;
+  int points_per_decade = 4;
+  SolverOptions solver{};
+};
+
+struct JLimEstimate {
+  double force_n = 0.0;  // the measured puncture force
+  Inversion j_lim;
+  // What the model can reach on the scan, and as J_lim -> infinity.
+  double smallest_force_n = 0.0;     // at the largest J_lim scanned
+  double largest_force_n = 0.0;      // at the smallest J_lim scanned
+  double neo_hookean_force_n = 0.0;  // the J_lim -> infinity limit (0 when it failed)
+  double min_j_lim = 0.0;            // the scan's ends
+  double max_j_lim = 0.0;
+  PuncturePrediction puncture;                         // at the fitted J_lim
+  std::optional<double> max_first_invariant_at_force;  // the paper's check: largest I1 of the
+                                                       // sliding state at the measured force
+  std::vector<ScanSample> scan;                        // (J_lim, predicted puncture force [N])
+};
+
+// `problem` must have the Gent law (its J_lim is ignored).  Throws std::invalid_argument for an
+// invalid problem, another law, or a force that is not finite and > 0.
+JLimEstimate jlim_from_puncture_force(const Problem& problem, double puncture_force_n,
+                                      const JLimOptions& options = {});
 
 // ---------------------------------------------------------------------------------------------
 // Least-squares fit of a uniaxial tensile test (§4.1, Fig. 11): nominal stress
@@ -125,5 +229,6 @@ UniaxialFit fit_uniaxial(const std::vector<UniaxialPoint>& data, FitLaw law,
                          const UniaxialFitOptions& options = {});
 
 std::string to_string(FitLaw law);
+std::string to_string(HoleMethod method);
 
 }  // namespace puncture
