@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "cli_error.hpp"
+#include "command_calibrate.hpp"
 #include "commands.hpp"
 #include "output_options.hpp"
 #include "problem_options.hpp"
@@ -17,7 +18,8 @@ constexpr const char* kDescription =
     "nonlinear membrane theory, Gent rubber, Coulomb friction on the indenter).\n"
     "It computes the loading curve from zero depth to puncture (default), one equilibrium\n"
     "state with all its fields, or the puncture point alone: the puncture force, depth,\n"
-    "stretch under the tip and where the crack starts.\n"
+    "stretch under the tip and where the crack starts.  `calibrate` and `fit` derive the\n"
+    "model's parameters from the paper's experiments.\n"
     "Units: lengths in mm, forces in N, moduli and stresses in MPa; line tension in N/mm;\n"
     "friction, stretches and the invariant I1 are dimensionless.  Defaults are the\n"
     "paper's lubricated silicone membrane (A = 25 mm, a = 2 mm, H = 0.2 mm, Gent with\n"
@@ -31,6 +33,8 @@ constexpr const char* kFooter =
     "  puncture state --force 2 --format json\n"
     "  puncture state --depth 8 --stick force:0.5 --stage auto\n"
     "  puncture puncture --indenter-radius 1 --material neo-hookean\n"
+    "  puncture calibrate friction --indenter-radius 1 --puncture-force 1.72 --hole-ratio 1.58\n"
+    "  puncture fit uniaxial tensile.csv --material gent\n"
     "Config file (--config FILE), one 'key = value' per line, keys are the long flag\n"
     "names, e.g.:\n"
     "  indenter-radius = 1\n"
@@ -73,6 +77,8 @@ int main(int argc, char** argv) {
     add_state_options(*state, state_flags);
     auto* puncture = app.add_subcommand("puncture", "The predicted puncture point alone");
     puncture->footer(kSubcommandFooter);
+    CalibrationFlags calibration_flags;
+    add_calibration_commands(app, calibration_flags);
 
     try {
       app.parse(argc, argv);
@@ -85,6 +91,12 @@ int main(int argc, char** argv) {
       return kExitBadInput;
     }
 
+    if (calibration_flags.parsed()) {
+      const auto format = format_of(output_flags);
+      check_writable(output_flags);
+      write_output(output_flags, run_calibration(app, problem_flags, calibration_flags, format));
+      return kExitOk;
+    }
     const auto problem = make_problem(problem_flags);
     const auto format = format_of(output_flags);
     check_writable(output_flags);

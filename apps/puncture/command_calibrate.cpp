@@ -1,0 +1,373 @@
+// `puncture calibrate critical-i1|friction|jlim` and `puncture fit uniaxial`.
+#include "command_calibrate.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "calibration_output.hpp"
+#include "cli_error.hpp"
+#include "progress.hpp"
+#include "puncture/calibration.hpp"
+#include "puncture/csv.hpp"
+
+namespace puncture::cli {
+
+namespace {
+
+constexpr const char* kCalibrateFooter =
+    "The physical flags (see puncture --help) describe the membrane and indenter of the test;\n"
+    "the parameter being calibrated must not be given.  Output flags: --format, --output.";
+
+bool given(const CLI::App& app, const char* flag) {
+  const auto* option = app.get_option_no_throw(flag);
+  return option && option->count() > 0;
+}
+
+void require_finite(double value, const char* flag, const char* range, bool ok) {
+  if (!std::isfinite(value) || !ok)
+    throw InputError(fmt::format("{}: must be a finite number {}, got {}", flag, range, value));
+}
+
+// A library input error, with the flag it is about when known.
+[[noreturn]] void rethrow_as_input(const std::exception& e, const char* prefix = nullptr) {
+  throw InputError(prefix ? fmt::format("{}: {}", prefix, e.what()) : std::string(e.what()));
+}
+
+// The problem the shared flags describe, with the calibrated parameter set to a valid
+// placeholder so that validation checks only the rest.
+Problem problem_without(ProblemFlags flags, const char* calibrated) {
+  if (std::string(calibrated) == "friction") flags.friction = 0.0;
+  if (std::string(calibrated) == "jlim" && std::isfinite(flags.critical_i1) &&
+      flags.critical_i1 > 3.0)
+    flags.j_lim = 2.0 * (flags.critical_i1 - 3.0);
+  return make_problem(flags);
+}
+
+std::string run_critical_i1(const CalibrationFlags& f, Format format) {
+  CriticalI1Report report;
+  const std::optional<double> mark =
+      f.mark_radius_option->count() > 0 ? std::optional<double>(f.mark_radius_mm) : std::nullopt;
+  if (mark) require_finite(*mark, "--mark-radius", "> 0 mm", *mark > 0.0);
+  if (!f.burst_data.empty()) {
+    report.source = f.burst_data;
+    try {
+      const auto table = read_numeric_csv(f.burst_data, 1);
+      if (!mark && !table.has("initial_radius_mm"))
+        throw InputError(fmt::format(
+            "--mark-radius: {} has no column initial_radius_mm, so the mark's initial radius "
+            "[mm] must be given",
+            f.burst_data));
+      if (mark && table.has("initial_radius_mm"))
+        throw InputError(
+            fmt::format("--mark-radius: {} gives each test's initial_radius_mm; do not give it too",
+                        f.burst_data));
+      report.tests = burst_tests_from_table(table, mark);
+    } catch (const CsvError& e) {
+      throw InputError(e.what());
+    } catch (const std::invalid_argument& e) {
+      rethrow_as_input(e);
+    }
+  } else {
+    if (f.burst_radii_mm.empty())
+      throw InputError(
+          "calibrate critical-i1: give the mark's radii at burst, --burst-radii R1,R2,... [mm] "
+          "with --mark-radius, or a CSV file");
+    if (!mark)
+      throw InputError(
+          "--mark-radius: the mark's initial radius [mm] is needed with --burst-radii");
+    report.source = "--burst-radii";
+    for (std::size_t i = 0; i < f.burst_radii_mm.size(); ++i) {
+      const double r = f.burst_radii_mm[i];
+      if (!std::isfinite(r) || r <= 0.0)
+        throw InputError(fmt::format(
+            "--burst-radii: value {} must be a finite number > 0 mm, got {}", i + 1, r));
+      if (r < *mark)
+        throw InputError(fmt::format(
+            "--burst-radii: value {} ({} mm) is below the mark radius {} mm; an inflated membrane "
+            "stretches the mark",
+            i + 1,
+            r,
+            *mark));
+      report.tests.push_back({*mark, r});
+    }
+  }
+  try {
+    report.estimate = critical_i1_from_inflation(report.tests);
+  } catch (const std::invalid_argument& e) {
+    rethrow_as_input(e);
+  }
+  return calibration_text(report, format);
+}
+
+std::string run_friction(const CLI::App& app, const ProblemFlags& pf, const CalibrationFlags& f,
+                         Format format) {
+  if (given(app, "--friction"))
+    throw InputError(
+        "--friction: `calibrate friction` determines the friction coefficient; do not give it");
+  const bool with_force = f.friction_force_option->count() > 0;
+  require_finite(f.hole_ratio, "--hole-ratio", "> 0", f.hole_ratio > 0.0);
+  require_finite(f.hole_ratio_sd, "--hole-ratio-sd", ">= 0", f.hole_ratio_sd >= 0.0);
+  if (with_force)
+    require_finite(f.puncture_force_n, "--puncture-force", "> 0 N", f.puncture_force_n > 0.0);
+  FrictionReport report;
+  report.problem = problem_without(pf, "friction");
+  report.hole = {f.hole_ratio,
+                 f.hole_ratio_sd,
+                 with_force ? std::optional<double>(f.puncture_force_n) : std::nullopt};
+  try {
+    Progress progress("calibrate friction");
+    if (with_force) {
+      progress.note("friction at the measured force");
+      report.at_measured_force =
+          friction_from_hole(report.problem, report.hole, HoleMethod::AtMeasuredForce);
+    }
+    progress.note("friction at the predicted puncture");
+    report.at_predicted_puncture =
+        friction_from_hole(report.problem, report.hole, HoleMethod::AtPredictedPuncture);
+  } catch (const std::invalid_argument& e) {
+    rethrow_as_input(e);
+  }
+  const auto& primary =
+      report.at_measured_force ? *report.at_measured_force : report.at_predicted_puncture;
+  if (!primary.friction.found) throw SolveError(primary.friction.message);
+  return calibration_text(report, format);
+}
+
+std::string run_jlim(const CLI::App& app, const ProblemFlags& pf, const CalibrationFlags& f,
+                     Format format) {
+  if (given(app, "--jlim"))
+    throw InputError("--jlim: `calibrate jlim` determines J_lim; do not give it");
+  if (pf.material != "gent")
+    throw InputError(fmt::format(
+        "--material: J_lim is a parameter of the Gent law; calibrate jlim needs --material gent, "
+        "got {}",
+        pf.material));
+  require_finite(f.puncture_force_n, "--puncture-force", "> 0 N", f.puncture_force_n > 0.0);
+  const bool force_sd = f.puncture_force_sd_n > 0.0;
+  const bool i1_sd = f.critical_i1_sd > 0.0;
+  require_finite(f.puncture_force_sd_n,
+                 "--puncture-force-sd",
+                 ">= 0 N and below --puncture-force",
+                 f.puncture_force_sd_n >= 0.0 && f.puncture_force_sd_n < f.puncture_force_n);
+  JLimReport report;
+  report.problem = problem_without(pf, "jlim");
+  require_finite(f.critical_i1_sd,
+                 "--critical-i1-sd",
+                 ">= 0 and below --critical-i1 - 3",
+                 f.critical_i1_sd >= 0.0 && f.critical_i1_sd < report.problem.critical_i1 - 3.0);
+  report.force_n = f.puncture_force_n;
+  if (force_sd) report.force_sd_n = f.puncture_force_sd_n;
+  if (i1_sd) report.critical_i1_sd = f.critical_i1_sd;
+  try {
+    Progress progress("calibrate jlim");
+    progress.note("J_lim for the measured force");
+    report.estimate = jlim_from_puncture_force(report.problem, f.puncture_force_n);
+    if (force_sd) {
+      progress.note("J_lim for the force +- sd");
+      report.force_plus_sd =
+          jlim_from_puncture_force(report.problem, f.puncture_force_n + f.puncture_force_sd_n);
+      report.force_minus_sd =
+          jlim_from_puncture_force(report.problem, f.puncture_force_n - f.puncture_force_sd_n);
+    }
+    if (i1_sd) {
+      progress.note("J_lim for the critical I1 +- sd");
+      Problem plus = report.problem;
+      plus.critical_i1 += f.critical_i1_sd;
+      Problem minus = report.problem;
+      minus.critical_i1 -= f.critical_i1_sd;
+      report.i1_plus_sd = jlim_from_puncture_force(plus, f.puncture_force_n);
+      report.i1_minus_sd = jlim_from_puncture_force(minus, f.puncture_force_n);
+    }
+  } catch (const std::invalid_argument& e) {
+    rethrow_as_input(e);
+  }
+  if (!report.estimate.j_lim.found) throw SolveError(report.estimate.j_lim.message);
+  return calibration_text(report, format);
+}
+
+FitLaw fit_law_of(const std::string& material) {
+  if (material == "neo-hookean") return FitLaw::NeoHookean;
+  if (material == "mooney-rivlin") return FitLaw::MooneyRivlin;
+  return FitLaw::Gent;
+}
+
+std::string run_fit_uniaxial(const CLI::App& app, const ProblemFlags& pf, const CalibrationFlags& f,
+                             Format format) {
+  for (const char* fitted : {"--shear-modulus", "--jlim", "--mr-alpha"})
+    if (given(app, fitted))
+      throw InputError(fmt::format(
+          "{}: `fit uniaxial` determines the material's parameters; do not give it", fitted));
+  const auto law = fit_law_of(pf.material);
+  UniaxialFitReport report;
+  report.source = f.uniaxial_data;
+  int specimen_flags = 0;
+  for (const auto* option : f.specimen_options) specimen_flags += option->count() > 0 ? 1 : 0;
+  if (specimen_flags == 3) {
+    require_finite(f.specimen_width_mm, "--specimen-width", "> 0 mm", f.specimen_width_mm > 0.0);
+    require_finite(
+        f.specimen_thickness_mm, "--specimen-thickness", "> 0 mm", f.specimen_thickness_mm > 0.0);
+    require_finite(f.gauge_length_mm, "--gauge-length", "> 0 mm", f.gauge_length_mm > 0.0);
+    report.specimen =
+        SpecimenGeometry{f.specimen_width_mm, f.specimen_thickness_mm, f.gauge_length_mm};
+  } else if (specimen_flags > 0) {
+    throw InputError(
+        "--specimen-width, --specimen-thickness, --gauge-length: give all three (force and "
+        "displacement data) or none (stretch and stress data)");
+  }
+  const std::size_t parameters = law == FitLaw::NeoHookean ? 1 : 2;
+  try {
+    const auto table = read_numeric_csv(f.uniaxial_data, parameters + 1);
+    report.data = uniaxial_points_from_table(table, report.specimen);
+    Progress progress("fit uniaxial");
+    progress.note("least squares");
+    report.fit = fit_uniaxial(report.data, law);
+  } catch (const CsvError& e) {
+    throw InputError(e.what());
+  } catch (const std::invalid_argument& e) {
+    rethrow_as_input(e, f.uniaxial_data.c_str());
+  }
+  if (!report.fit.converged) throw SolveError("the fit did not converge: " + report.fit.message);
+  return calibration_text(report, format);
+}
+
+}  // namespace
+
+void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
+  f.calibrate =
+      app.add_subcommand("calibrate",
+                         "Model parameters from experiments: critical-i1 (inflation tests),\n"
+                         "friction (hole size), jlim (puncture force)");
+  f.calibrate->require_subcommand(1);
+  f.calibrate->footer(kCalibrateFooter);
+
+  f.critical_i1 = f.calibrate->add_subcommand(
+      "critical-i1",
+      "Critical I1 from inflation (bulge) tests (paper §2.3): the mark at the\n"
+      "membrane's centre is stretched equibiaxially, lambda = burst radius /\n"
+      "initial radius, I1 = 2 lambda^2 + lambda^-4; mean and sample sd over tests");
+  f.critical_i1->footer(
+      "Examples:\n"
+      "  puncture calibrate critical-i1 --mark-radius 0.5 --burst-radii 3.39,3.45,3.46,3.55\n"
+      "  puncture calibrate critical-i1 bursts.csv      (columns burst_radius_mm and\n"
+      "                                                  initial_radius_mm, or --mark-radius)");
+  f.mark_radius_option =
+      f.critical_i1
+          ->add_option("--mark-radius",
+                       f.mark_radius_mm,
+                       "Initial radius of the mark at the membrane's centre [mm] (> 0;\n"
+                       "the paper's: 0.5)")
+          ->group("Inflation tests");
+  auto* radii = f.critical_i1
+                    ->add_option("--burst-radii",
+                                 f.burst_radii_mm,
+                                 "Radius of the mark when the membrane burst, one per test\n"
+                                 "[mm], comma-separated")
+                    ->delimiter(',')
+                    ->group("Inflation tests");
+  auto* file = f.critical_i1
+                   ->add_option("file",
+                                f.burst_data,
+                                "CSV file instead of --burst-radii: a header, then one row per\n"
+                                "test with burst_radius_mm [mm] and initial_radius_mm [mm]\n"
+                                "(or --mark-radius for all)")
+                   ->type_name("FILE")
+                   ->group("Inflation tests");
+  radii->excludes(file);
+
+  f.friction = f.calibrate->add_subcommand(
+      "friction",
+      "Friction coefficient mu' from the hole a dry membrane leaves (paper §4.2):\n"
+      "indenter diameter / hole diameter = Part III stretch at puncture");
+  f.friction->footer(
+      "Two estimates: at the measured force (the paper's method: the sliding equilibrium at\n"
+      "--puncture-force has the ratio as its Part III stretch), and at the predicted puncture\n"
+      "(force-free: the predicted puncture has the ratio as its Part III stretch; with the\n"
+      "crack at the corner that stretch depends only on the material, mu' and the critical\n"
+      "I1).  Without --puncture-force only the second.\n"
+      "Example:\n"
+      "  puncture calibrate friction --indenter-radius 1 --puncture-force 1.72 \\\n"
+      "      --hole-ratio 1.58 --hole-ratio-sd 0.14");
+  f.friction
+      ->add_option("--hole-ratio",
+                   f.hole_ratio,
+                   "Indenter diameter / hole diameter [dimensionless] (> 0; the\n"
+                   "paper's dry 1 mm indenter: 1.58)")
+      ->required()
+      ->group("Hole");
+  f.friction
+      ->add_option("--hole-ratio-sd",
+                   f.hole_ratio_sd,
+                   "Standard deviation of the ratio [dimensionless] (>= 0; the\n"
+                   "paper's: 0.14); gives the interval of mu'")
+      ->group("Hole");
+  f.friction_force_option =
+      f.friction
+          ->add_option("--puncture-force",
+                       f.puncture_force_n,
+                       "Measured puncture force [N] (> 0), for the paper's method")
+          ->group("Hole");
+
+  f.jlim = f.calibrate->add_subcommand(
+      "jlim",
+      "Gent J_lim from one puncture test (paper §4.1): the J_lim whose predicted\n"
+      "puncture force (largest I1 = --critical-i1) equals the measured force");
+  f.jlim->footer(
+      "Example:\n"
+      "  puncture calibrate jlim --indenter-radius 2 --puncture-force 0.7 --critical-i1 95.2\n"
+      "The friction, stick criterion and Part II equation are the model's (--friction, ...).");
+  f.jlim->add_option("--puncture-force", f.puncture_force_n, "Measured puncture force [N] (> 0)")
+      ->required()
+      ->group("Puncture test");
+  f.jlim
+      ->add_option("--puncture-force-sd",
+                   f.puncture_force_sd_n,
+                   "Standard deviation of the measured force [N] (>= 0)")
+      ->group("Puncture test");
+  f.jlim
+      ->add_option("--critical-i1-sd",
+                   f.critical_i1_sd,
+                   "Standard deviation of the critical I1 [dimensionless] (>= 0;\n"
+                   "the paper's: 4.8)")
+      ->group("Puncture test");
+
+  f.fit = app.add_subcommand("fit", "Least-squares fits of material tests: uniaxial");
+  f.fit->require_subcommand(1);
+  f.uniaxial = f.fit->add_subcommand(
+      "uniaxial",
+      "Fit G (and J_lim for gent, alpha for mooney-rivlin) to a uniaxial tensile\n"
+      "test (paper §4.1, Fig. 11) by Levenberg-Marquardt; each parameter with its\n"
+      "standard error and whether the data determine it");
+  f.uniaxial->footer(
+      "The CSV file has a header and the columns stretch,nominal_stress_mpa, or\n"
+      "force_n,displacement_mm with the specimen's --specimen-width, --specimen-thickness\n"
+      "and --gauge-length [mm] (stretch = 1 + displacement / gauge length, nominal stress =\n"
+      "force / (width thickness)).  --material chooses the law.\n"
+      "Example:\n"
+      "  puncture fit uniaxial tensile.csv --material gent --specimen-width 10 \\\n"
+      "      --specimen-thickness 0.2 --gauge-length 60");
+  f.uniaxial->add_option("file", f.uniaxial_data, "CSV file of the tensile test")
+      ->required()
+      ->type_name("FILE");
+  f.specimen_options = {
+      f.uniaxial->add_option("--specimen-width", f.specimen_width_mm, "Specimen width [mm] (> 0)")
+          ->group("Specimen (force and displacement data)"),
+      f.uniaxial
+          ->add_option(
+              "--specimen-thickness", f.specimen_thickness_mm, "Specimen thickness [mm] (> 0)")
+          ->group("Specimen (force and displacement data)"),
+      f.uniaxial->add_option("--gauge-length", f.gauge_length_mm, "Initial gauge length [mm] (> 0)")
+          ->group("Specimen (force and displacement data)"),
+  };
+}
+
+std::string run_calibration(const CLI::App& app, const ProblemFlags& problem,
+                            const CalibrationFlags& f, Format format) {
+  if (f.critical_i1->parsed()) return run_critical_i1(f, format);
+  if (f.friction->parsed()) return run_friction(app, problem, f, format);
+  if (f.jlim->parsed()) return run_jlim(app, problem, f, format);
+  return run_fit_uniaxial(app, problem, f, format);
+}
+
+}  // namespace puncture::cli

@@ -1,0 +1,53 @@
+#pragma once
+// `calibrate critical-i1|friction|jlim` and `fit uniaxial`: the model's parameters from the
+// paper's experiments (include/puncture/calibration.hpp).
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "output_options.hpp"
+#include "problem_options.hpp"
+
+namespace puncture::cli {
+
+struct CalibrationFlags {
+  CLI::App* calibrate = nullptr;
+  CLI::App* fit = nullptr;
+
+  // calibrate critical-i1
+  CLI::App* critical_i1 = nullptr;
+  double mark_radius_mm = 0.0;
+  std::vector<double> burst_radii_mm;
+  std::string burst_data;
+  CLI::Option* mark_radius_option = nullptr;
+
+  // calibrate friction, calibrate jlim
+  CLI::App* friction = nullptr;
+  CLI::App* jlim = nullptr;
+  double puncture_force_n = 0.0;
+  double puncture_force_sd_n = 0.0;
+  double hole_ratio = 0.0;
+  double hole_ratio_sd = 0.0;
+  double critical_i1_sd = 0.0;
+  CLI::Option* friction_force_option = nullptr;
+
+  // fit uniaxial
+  CLI::App* uniaxial = nullptr;
+  std::string uniaxial_data;
+  double specimen_width_mm = 0.0;
+  double specimen_thickness_mm = 0.0;
+  double gauge_length_mm = 0.0;
+  std::vector<CLI::Option*> specimen_options;
+
+  bool parsed() const { return calibrate->parsed() || fit->parsed(); }
+};
+
+// Registers `calibrate` (with critical-i1, friction, jlim) and `fit` (with uniaxial) on `app`.
+void add_calibration_commands(CLI::App& app, CalibrationFlags& flags);
+
+// Runs the parsed calibration and returns its output text.  `app` is asked which shared flags
+// were given (e.g. --friction is refused by `calibrate friction`, which determines it).
+std::string run_calibration(const CLI::App& app, const ProblemFlags& problem,
+                            const CalibrationFlags& flags, Format format);
+
+}  // namespace puncture::cli
