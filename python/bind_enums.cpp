@@ -1,0 +1,68 @@
+// The library's enums.  Each has a `token`: the name the CLI writes in CSV and JSON.
+#include "bindings.hpp"
+#include "puncture/equilibrium.hpp"
+
+namespace puncture::python {
+
+namespace {
+
+std::string configuration_token(Configuration c) {
+  switch (c) {
+    case Configuration::Unloaded:
+      return "unloaded";
+    case Configuration::Stick:
+      return "stick";
+    case Configuration::SlipWithoutPartTwo:
+      return "slip_without_part_two";
+    case Configuration::SlipWithPartTwo:
+      return "slip_with_part_two";
+  }
+  return "unknown";
+}
+
+}  // namespace
+
+void bind_enums(py::module_& m) {
+  py::enum_<Stage>(m, "Stage", "Loading stage: membrane held at the indenter's edge, or sliding")
+      .value("Stick", Stage::Stick)
+      .value("Slip", Stage::Slip)
+      .def_property_readonly("token", [](Stage s) { return to_string(s); });
+
+  py::enum_<Configuration>(m, "Configuration", "Which parts the membrane is made of")
+      .value("Unloaded", Configuration::Unloaded, "flat membrane, zero force")
+      .value("Stick", Configuration::Stick, "held at the indenter's edge; Part III unstretched")
+      .value("SlipWithoutPartTwo",
+             Configuration::SlipWithoutPartTwo,
+             "Part III stretched, Part I leaves from the corner")
+      .value("SlipWithPartTwo",
+             Configuration::SlipWithPartTwo,
+             "Part III, the corner wrapped, Part II on the indenter's side, then Part I")
+      .def_property_readonly("token", &configuration_token)
+      .def_property_readonly("description", [](Configuration c) { return to_string(c); });
+
+  py::enum_<Status>(m, "Status", "Outcome of a solve")
+      .value("Converged", Status::Converged)
+      .value("NoConvergence", Status::NoConvergence)
+      .value("BeyondLocking", Status::BeyondLocking)
+      .value("StickWrapsSide", Status::StickWrapsSide)
+      .value("InvalidInput", Status::InvalidInput)
+      .def_property_readonly("token", [](Status s) { return to_string(s); });
+
+  py::enum_<StickRule>(
+      m, "StickRule", "When a membrane held at the indenter's edge starts to slide")
+      .value("None_", StickRule::None, "Coulomb friction only: slides from the first touch")
+      .value("Force", StickRule::Force, "held until the force reaches the threshold [N]")
+      .value("Depth", StickRule::Depth, "held until the depth reaches the threshold [mm]")
+      .value("EdgeTension",
+             StickRule::EdgeTension,
+             "held until the radial line tension at the edge reaches the threshold [N/mm]")
+      .value("Always", StickRule::Always, "never slides")
+      .def_property_readonly("token", [](StickRule r) { return to_string(r); });
+
+  py::enum_<PartTwoEquation>(m, "PartTwoEquation", "Equilibrium equation of Part II")
+      .value("RingBalance", PartTwoEquation::RingBalance, "vertical balance of a ring (default)")
+      .value("PaperEq18", PartTwoEquation::PaperEq18, "the paper's Eq. 18 as printed")
+      .def_property_readonly("token", [](PartTwoEquation e) { return to_string(e); });
+}
+
+}  // namespace puncture::python

@@ -1,0 +1,405 @@
+// What a user specifies: Geometry, the material laws and Material, StickCriterion, Problem, and
+// the solver's tolerances (SolverOptions).
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cmath>
+#include <string_view>
+#include <utility>
+#include <variant>
+
+#include "bindings.hpp"
+#include "puncture/material.hpp"
+#include "puncture/options.hpp"
+#include "puncture/problem.hpp"
+
+namespace puncture::python {
+
+namespace {
+
+// The library's validation messages start with the parameter's name; this gives its attribute.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 9> kAttributeOfMessage{{
+    {"clamp radius", "geometry.clamp_radius_mm"},
+    {"indenter radius", "geometry.indenter_radius_mm"},
+    {"thickness", "geometry.thickness_mm"},
+    {"shear modulus", "material.shear_modulus_mpa"},
+    {"J_lim", "material.law.j_lim"},
+    {"Mooney-Rivlin alpha", "material.law.alpha"},
+    {"friction", "friction"},
+    {"critical I1", "critical_i1"},
+    {"stick threshold", "stick.threshold"},
+}};
+
+std::string with_attribute(const std::string& message) {
+  for (const auto& [prefix, attribute] : kAttributeOfMessage)
+    if (std::string_view(message).substr(0, prefix.size()) == prefix)
+      return fmt::format("{}: {}", attribute, message);
+  return message;
+}
+
+PartTwoEquation part_two_equation_of(const std::variant<PartTwoEquation, std::string>& v) {
+  if (const auto* e = std::get_if<PartTwoEquation>(&v)) return *e;
+  const auto& text = std::get<std::string>(v);
+  if (text == "ring-balance") return PartTwoEquation::RingBalance;
+  if (text == "paper-eq18") return PartTwoEquation::PaperEq18;
+  throw py::value_error(fmt::format(
+      "part_two_equation: expected PartTwoEquation, 'ring-balance' or 'paper-eq18', got '{}'",
+      text));
+}
+
+// The CLI's --stick forms: none | always | force:<N> | depth:<mm> | edge-tension:<N/mm>.
+StickCriterion stick_of(const std::variant<StickCriterion, std::string>& v) {
+  if (const auto* s = std::get_if<StickCriterion>(&v)) return *s;
+  const auto& text = std::get<std::string>(v);
+  if (text == "none") return {StickRule::None, 0.0};
+  if (text == "always") return {StickRule::Always, 0.0};
+  const auto colon = text.find(':');
+  const auto rule = text.substr(0, colon);
+  const auto value = colon == std::string::npos ? std::string() : text.substr(colon + 1);
+  StickCriterion s;
+  if (rule == "force")
+    s.rule = StickRule::Force;
+  else if (rule == "depth")
+    s.rule = StickRule::Depth;
+  else if (rule == "edge-tension")
+    s.rule = StickRule::EdgeTension;
+  std::size_t used = 0;
+  bool number = false;
+  try {
+    s.threshold = std::stod(value, &used);
+    number = used == value.size();
+  } catch (const std::exception&) {
+  }
+  if (s.rule == StickRule::None || !number)
+    throw py::value_error(fmt::format(
+        "stick: expected none, always, force:<N>, depth:<mm> or edge-tension:<N/mm>, got '{}'",
+        text));
+  return s;
+}
+
+std::string law_repr(const MaterialLaw& law) {
+  return std::visit(
+      [](const auto& l) -> std::string {
+        using L = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<L, Gent>) return fmt::format("Gent(j_lim={:g})", l.j_lim);
+        if constexpr (std::is_same_v<L, MooneyRivlin>)
+          return fmt::format("MooneyRivlin(alpha={:g})", l.alpha);
+        return "NeoHookean()";
+      },
+      law);
+}
+
+std::string geometry_repr(const Geometry& g) {
+  return fmt::format("Geometry(clamp_radius_mm={:g}, indenter_radius_mm={:g}, thickness_mm={:g})",
+                     g.clamp_radius_mm,
+                     g.indenter_radius_mm,
+                     g.thickness_mm);
+}
+
+std::string material_repr(const Material& m) {
+  return fmt::format(
+      "Material(shear_modulus_mpa={:g}, law={})", m.shear_modulus_mpa, law_repr(m.law));
+}
+
+std::string stick_repr(const StickCriterion& s) {
+  if (s.rule == StickRule::None || s.rule == StickRule::Always)
+    return fmt::format("StickCriterion('{}')", to_string(s.rule));
+  return fmt::format("StickCriterion('{}:{:g}')", to_string(s.rule), s.threshold);
+}
+
+// By value: pybind11 2.10 cannot vectorize a function with a const reference argument.
+double uniaxial_mpa(Material m, double stretch) {
+  return m.shear_modulus_mpa * uniaxial_stress(m.law, stretch);
+}
+double equibiaxial_mpa(Material m, double stretch) {
+  return m.shear_modulus_mpa * equibiaxial_stress(m.law, stretch);
+}
+double radial_mpa(Material m, double l1, double l2) {
+  return m.shear_modulus_mpa * membrane_stress(m.law, l1, l2).s1;
+}
+double hoop_mpa(Material m, double l1, double l2) {
+  return m.shear_modulus_mpa * membrane_stress(m.law, l1, l2).s2;
+}
+double first_invariant_of(double l1, double l2) { return first_invariant(l1, l2); }
+
+template <class T>
+void copyable(py::class_<T>& c) {
+  c.def("__copy__", [](const T& x) { return T(x); });
+  c.def(
+      "__deepcopy__", [](const T& x, py::dict) { return T(x); }, py::arg("memo"));
+}
+
+}  // namespace
+
+std::string invalid_input_message(const Problem& problem) {
+  const auto errors = validation_errors(problem);
+  if (errors.empty()) return {};
+  std::string all = "invalid input:";
+  for (const auto& e : errors) all += "\n  " + with_attribute(e);
+  return all;
+}
+
+void bind_problem(py::module_& m) {
+  py::class_<Geometry> geometry(m, "Geometry", "Clamp, indenter and membrane dimensions [mm]");
+  geometry
+      .def(py::init([](double clamp, double indenter, double thickness) {
+             return Geometry{clamp, indenter, thickness};
+           }),
+           py::arg("clamp_radius_mm") = Geometry{}.clamp_radius_mm,
+           py::arg("indenter_radius_mm") = Geometry{}.indenter_radius_mm,
+           py::arg("thickness_mm") = Geometry{}.thickness_mm)
+      .def_readwrite("clamp_radius_mm",
+                     &Geometry::clamp_radius_mm,
+                     "inner radius A of the clamping rings [mm]")
+      .def_readwrite("indenter_radius_mm",
+                     &Geometry::indenter_radius_mm,
+                     "radius a of the flat-ended indenter [mm]")
+      .def_readwrite(
+          "thickness_mm", &Geometry::thickness_mm, "undeformed membrane thickness H [mm]")
+      .def("__repr__", &geometry_repr);
+  copyable(geometry);
+
+  py::class_<Gent> gent(m, "Gent", "Gent law W/G = -(J_lim/2) ln(1 - (I1 - 3)/J_lim)");
+  gent.def(py::init([](double j_lim) { return Gent{j_lim}; }), py::arg("j_lim") = Gent{}.j_lim)
+      .def_readwrite("j_lim", &Gent::j_lim, "limiting value of I1 - 3")
+      .def("__repr__", [](const Gent& g) { return law_repr(g); });
+  copyable(gent);
+  py::class_<NeoHookean> neo(m, "NeoHookean", "neo-Hookean law W/G = (I1 - 3)/2");
+  neo.def(py::init<>()).def("__repr__", [](const NeoHookean& n) { return law_repr(n); });
+  copyable(neo);
+  py::class_<MooneyRivlin> mr(
+      m, "MooneyRivlin", "Mooney-Rivlin law W/G = (1 - alpha)(I1 - 3)/2 + alpha (I2 - 3)/2");
+  mr.def(py::init([](double alpha) { return MooneyRivlin{alpha}; }),
+         py::arg("alpha") = MooneyRivlin{}.alpha)
+      .def_readwrite("alpha", &MooneyRivlin::alpha, "C2 / (C1 + C2), in [0, 1)")
+      .def("__repr__", [](const MooneyRivlin& r) { return law_repr(r); });
+  copyable(mr);
+
+  py::class_<Material> material(m, "Material", "Shear modulus [MPa] and strain-energy law");
+  material
+      .def(py::init([](double g, const MaterialLaw& law) {
+             return Material{g, law};
+           }),
+           py::arg("shear_modulus_mpa") = Material{}.shear_modulus_mpa,
+           py::arg("law") = Gent{})
+      .def_static(
+          "gent",
+          [](double g, double j_lim) {
+            return Material{g, Gent{j_lim}};
+          },
+          py::arg("shear_modulus_mpa") = Material{}.shear_modulus_mpa,
+          py::arg("j_lim") = Gent{}.j_lim,
+          "Gent rubber (the paper's law)")
+      .def_static(
+          "neo_hookean",
+          [](double g) {
+            return Material{g, NeoHookean{}};
+          },
+          py::arg("shear_modulus_mpa") = Material{}.shear_modulus_mpa,
+          "neo-Hookean rubber")
+      .def_static(
+          "mooney_rivlin",
+          [](double g, double alpha) {
+            return Material{g, MooneyRivlin{alpha}};
+          },
+          py::arg("shear_modulus_mpa") = Material{}.shear_modulus_mpa,
+          py::arg("alpha") = MooneyRivlin{}.alpha,
+          "Mooney-Rivlin rubber, alpha = C2 / (C1 + C2)")
+      .def_readwrite(
+          "shear_modulus_mpa", &Material::shear_modulus_mpa, "initial shear modulus G [MPa]")
+      .def_property(
+          "law",
+          [](const Material& mat) { return mat.law; },
+          [](Material& mat, const MaterialLaw& law) { mat.law = law; },
+          "the strain-energy law (a copy: assign a new one to change it)")
+      .def_property_readonly(
+          "law_name", [](const Material& mat) { return law_name(mat.law); }, "e.g. 'gent'")
+      .def_property_readonly(
+          "j_lim",
+          [](const Material& mat) -> py::object {
+            if (const auto* g = std::get_if<Gent>(&mat.law)) return py::float_(g->j_lim);
+            return py::none();
+          },
+          "J_lim for a Gent law, else None")
+      .def_property_readonly(
+          "alpha",
+          [](const Material& mat) -> py::object {
+            if (const auto* r = std::get_if<MooneyRivlin>(&mat.law)) return py::float_(r->alpha);
+            return py::none();
+          },
+          "alpha for a Mooney-Rivlin law, else None")
+      .def_property_readonly(
+          "max_first_invariant",
+          [](const Material& mat) { return max_first_invariant(mat.law); },
+          "I1 at which the law locks: 3 + J_lim for Gent, inf otherwise")
+      .def_property_readonly(
+          "description", [](const Material& mat) { return describe(mat); }, "in words")
+      .def("uniaxial_stress_mpa",
+           py::vectorize(&uniaxial_mpa),
+           py::arg("stretch"),
+           "Nominal stress [MPa] in uniaxial tension at the given stretch")
+      .def("equibiaxial_stress_mpa",
+           py::vectorize(&equibiaxial_mpa),
+           py::arg("stretch"),
+           "Nominal stress [MPa] in equibiaxial tension (as under the tip)")
+      .def("radial_stress_mpa",
+           py::vectorize(&radial_mpa),
+           py::arg("lambda1"),
+           py::arg("lambda2"),
+           "Membrane nominal stress s1 [MPa] along lambda1 at stretches lambda1, lambda2")
+      .def("hoop_stress_mpa",
+           py::vectorize(&hoop_mpa),
+           py::arg("lambda1"),
+           py::arg("lambda2"),
+           "Membrane nominal stress s2 [MPa] along lambda2 at stretches lambda1, lambda2")
+      .def("__repr__", &material_repr);
+  copyable(material);
+
+  m.def("first_invariant",
+        py::vectorize(&first_invariant_of),
+        py::arg("lambda1"),
+        py::arg("lambda2"),
+        "I1 = lambda1^2 + lambda2^2 + 1/(lambda1 lambda2)^2 of an incompressible membrane");
+
+  py::class_<StickCriterion> stick(
+      m,
+      "StickCriterion",
+      "When the membrane, held at the indenter's edge at first, starts to slide.  Also given as\n"
+      "the CLI's --stick text: 'none', 'always', 'force:<N>', 'depth:<mm>', "
+      "'edge-tension:<N/mm>'.");
+  stick
+      .def(py::init([](StickRule rule, double threshold) {
+             return StickCriterion{rule, threshold};
+           }),
+           py::arg("rule") = StickRule::None,
+           py::arg("threshold") = 0.0)
+      .def(py::init([](const std::string& text) { return stick_of(text); }), py::arg("text"))
+      .def_static("none",
+                  [] {
+                    return StickCriterion{StickRule::None, 0.0};
+                  })
+      .def_static("always",
+                  [] {
+                    return StickCriterion{StickRule::Always, 0.0};
+                  })
+      .def_static(
+          "force",
+          [](double n) {
+            return StickCriterion{StickRule::Force, n};
+          },
+          py::arg("force_n"))
+      .def_static(
+          "depth",
+          [](double mm) {
+            return StickCriterion{StickRule::Depth, mm};
+          },
+          py::arg("depth_mm"))
+      .def_static(
+          "edge_tension",
+          [](double n_per_mm) {
+            return StickCriterion{StickRule::EdgeTension, n_per_mm};
+          },
+          py::arg("tension_n_per_mm"))
+      .def_readwrite("rule", &StickCriterion::rule)
+      .def_readwrite("threshold",
+                     &StickCriterion::threshold,
+                     "threshold of the rule: N (force), mm (depth), N/mm (edge tension)")
+      .def("__repr__", &stick_repr);
+  copyable(stick);
+
+  const Problem defaults;
+  py::class_<Problem> problem(
+      m,
+      "Problem",
+      "The membrane, the indenter, the contact and the failure criterion; defaults are the\n"
+      "paper's lubricated silicone membrane and 2 mm indenter.");
+  problem
+      .def(py::init([](const Geometry& g,
+                       const Material& mat,
+                       double friction,
+                       double critical_i1,
+                       const std::variant<StickCriterion, std::string>& stick,
+                       const std::variant<PartTwoEquation, std::string>& equation) {
+             return Problem{
+                 g, mat, friction, critical_i1, stick_of(stick), part_two_equation_of(equation)};
+           }),
+           py::arg("geometry") = defaults.geometry,
+           py::arg("material") = defaults.material,
+           py::arg("friction") = defaults.friction,
+           py::arg("critical_i1") = defaults.critical_i1,
+           py::arg("stick") = defaults.stick,
+           py::arg("part_two_equation") = defaults.part_two_equation)
+      .def_readwrite("geometry", &Problem::geometry)
+      .def_readwrite("material", &Problem::material)
+      .def_readwrite(
+          "friction", &Problem::friction, "Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)")
+      .def_readwrite("critical_i1", &Problem::critical_i1, "I1 at which the membrane punctures")
+      .def_property(
+          "stick",
+          [](Problem& p) -> StickCriterion& { return p.stick; },
+          [](Problem& p, const std::variant<StickCriterion, std::string>& s) {
+            p.stick = stick_of(s);
+          },
+          py::return_value_policy::reference_internal,
+          "stick -> slip rule (StickCriterion, or its CLI text such as 'force:0.3')")
+      .def_property(
+          "part_two_equation",
+          [](const Problem& p) { return p.part_two_equation; },
+          [](Problem& p, const std::variant<PartTwoEquation, std::string>& e) {
+            p.part_two_equation = part_two_equation_of(e);
+          },
+          "PartTwoEquation, or 'ring-balance' / 'paper-eq18'")
+      .def_property_readonly(
+          "force_scale_n", &force_scale_n, "2 pi G H A [N]: normalised force = F / this")
+      .def("validation_errors",
+           &validation_errors,
+           "Every problem with the input (the library's messages); empty if valid")
+      .def(
+          "validate",
+          [](const Problem& p) {
+            if (const auto message = invalid_input_message(p); !message.empty())
+              throw py::value_error(message);
+          },
+          "Raise ValueError listing every invalid parameter")
+      .def("__repr__", [](const Problem& p) {
+        return fmt::format(
+            "Problem(geometry={}, material={}, friction={:g}, critical_i1={:g}, stick={}, "
+            "part_two_equation='{}')",
+            geometry_repr(p.geometry),
+            material_repr(p.material),
+            p.friction,
+            p.critical_i1,
+            stick_repr(p.stick),
+            to_string(p.part_two_equation));
+      });
+  copyable(problem);
+
+  py::class_<SolverOptions> options(m, "SolverOptions", "Tolerances and limits of the solver");
+  options.def(py::init<>())
+      .def_readwrite("integration_rel_tol", &SolverOptions::integration_rel_tol)
+      .def_readwrite("integration_abs_tol", &SolverOptions::integration_abs_tol)
+      .def_readwrite("shooting_tol", &SolverOptions::shooting_tol)
+      .def_readwrite("curve_tol", &SolverOptions::curve_tol)
+      .def_readwrite("field_points", &SolverOptions::field_points)
+      .def_readwrite("max_shooting_iterations", &SolverOptions::max_shooting_iterations)
+      .def_readwrite("max_steps", &SolverOptions::max_steps)
+      .def_readwrite("record_fields", &SolverOptions::record_fields)
+      .def("__repr__", [](const SolverOptions& s) {
+        return fmt::format(
+            "SolverOptions(integration_rel_tol={:g}, integration_abs_tol={:g}, shooting_tol={:g}, "
+            "curve_tol={:g}, field_points={}, max_shooting_iterations={}, max_steps={}, "
+            "record_fields={})",
+            s.integration_rel_tol,
+            s.integration_abs_tol,
+            s.shooting_tol,
+            s.curve_tol,
+            s.field_points,
+            s.max_shooting_iterations,
+            s.max_steps,
+            s.record_fields);
+      });
+  copyable(options);
+}
+
+}  // namespace puncture::python

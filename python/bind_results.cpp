@@ -1,0 +1,338 @@
+// What the solver returns: one equilibrium with its fields along the membrane, the loading curve
+// and the puncture point.  Arrays are numpy; the solve functions attach the problem they solved
+// as `.problem`.
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "puncture/equilibrium.hpp"
+#include "puncture/loading_curve.hpp"
+
+namespace puncture::python {
+
+namespace {
+
+using Column = std::vector<double> MembraneFields::*;
+
+// The fields with the CLI's CSV column names.
+constexpr std::pair<const char*, Column> kFieldColumns[] = {
+    {"R_mm", &MembraneFields::reference_radius_mm},
+    {"r_mm", &MembraneFields::radius_mm},
+    {"z_mm", &MembraneFields::deflection_mm},
+    {"slope_rad", &MembraneFields::slope_rad},
+    {"lambda1", &MembraneFields::radial_stretch},
+    {"lambda2", &MembraneFields::hoop_stretch},
+    {"lambda3", &MembraneFields::thickness_stretch},
+    {"s1_mpa", &MembraneFields::radial_stress_mpa},
+    {"s2_mpa", &MembraneFields::hoop_stress_mpa},
+    {"I1", &MembraneFields::first_invariant},
+    {"contact_pressure_mpa", &MembraneFields::contact_pressure_mpa},
+    {"friction_traction_mpa", &MembraneFields::friction_traction_mpa},
+};
+
+void field(py::class_<MembraneFields>& c, const char* name, Column member, const char* doc) {
+  c.def_property_readonly(
+      name,
+      [member](py::object self) { return view(self.cast<const MembraneFields&>().*member, self); },
+      doc);
+}
+
+using PointValue = double CurvePoint::*;
+
+void curve_column(py::class_<LoadingCurve>& c, const char* name, PointValue member,
+                  const char* doc) {
+  c.def_property_readonly(
+      name,
+      [member](const LoadingCurve& curve) {
+        return column<double>(curve.points, [member](const CurvePoint& p) { return p.*member; });
+      },
+      doc);
+}
+
+// A member object of a result, carrying its owner's `.problem` along.
+template <class Owner, class Member>
+py::object member_with_problem(py::object self, Member Owner::*member) {
+  auto& owner = self.cast<Owner&>();
+  py::object out = py::cast(&(owner.*member), py::return_value_policy::reference_internal, self);
+  if (py::hasattr(self, "problem")) out.attr("problem") = self.attr("problem");
+  return out;
+}
+
+std::string equilibrium_repr(const Equilibrium& e) {
+  return fmt::format(
+      "<Equilibrium {}: {} stage, {}, force_n={:.6g}, depth_mm={:.6g}, part_three_stretch={:.6g}, "
+      "max_first_invariant={:.6g}{}>",
+      to_string(e.status),
+      to_string(e.stage),
+      to_string(e.configuration),
+      e.force_n,
+      e.depth_mm,
+      e.part_three_stretch,
+      e.max_first_invariant,
+      e.ok() ? "" : ": " + e.message);
+}
+
+}  // namespace
+
+void bind_results(py::module_& m) {
+  py::class_<MembraneFields> fields(
+      m,
+      "MembraneFields",
+      "Fields along the meridian from the centre (R = 0) to the clamp (R = A), one value per\n"
+      "sample; read-only numpy arrays.");
+  fields
+      .def_property_readonly(
+          "part",
+          [](py::object self) { return view(self.cast<const MembraneFields&>().part, self); },
+          "1 free, 2 on the indenter's side, 3 under the tip")
+      .def("__len__", &MembraneFields::size)
+      .def(
+          "columns",
+          [](py::object self) {
+            const auto& f = self.cast<const MembraneFields&>();
+            py::dict d;
+            d["part"] = view(f.part, self);
+            for (const auto& [name, member] : kFieldColumns) d[name] = view(f.*member, self);
+            return d;
+          },
+          "The fields as a dict of arrays named like the CLI's CSV columns");
+  field(fields,
+        "reference_radius_mm",
+        &MembraneFields::reference_radius_mm,
+        "R, position in the flat reference state [mm]");
+  field(fields, "radius_mm", &MembraneFields::radius_mm, "r, current distance from the axis [mm]");
+  field(fields,
+        "deflection_mm",
+        &MembraneFields::deflection_mm,
+        "z, axial displacement below the clamp plane, in the indentation direction [mm]");
+  field(fields,
+        "slope_rad",
+        &MembraneFields::slope_rad,
+        "phi, angle of the meridian to the clamp plane [rad]");
+  field(fields, "radial_stretch", &MembraneFields::radial_stretch, "lambda1 (meridional)");
+  field(fields, "hoop_stretch", &MembraneFields::hoop_stretch, "lambda2 = r / R");
+  field(fields,
+        "thickness_stretch",
+        &MembraneFields::thickness_stretch,
+        "lambda3 = 1 / (lambda1 lambda2)");
+  field(fields,
+        "radial_stress_mpa",
+        &MembraneFields::radial_stress_mpa,
+        "s1, nominal radial stress [MPa]");
+  field(
+      fields, "hoop_stress_mpa", &MembraneFields::hoop_stress_mpa, "s2, nominal hoop stress [MPa]");
+  field(fields,
+        "first_invariant",
+        &MembraneFields::first_invariant,
+        "I1 = lambda1^2 + lambda2^2 + lambda3^2");
+  field(fields,
+        "contact_pressure_mpa",
+        &MembraneFields::contact_pressure_mpa,
+        "contact pressure in Part II (true, per current area) [MPa], else 0");
+  field(fields,
+        "friction_traction_mpa",
+        &MembraneFields::friction_traction_mpa,
+        "friction traction in Part II [MPa], else 0");
+
+  py::class_<Equilibrium>(m, "Equilibrium", "One equilibrium state", py::dynamic_attr())
+      .def_readonly("status", &Equilibrium::status)
+      .def_readonly("message", &Equilibrium::message, "why, when not converged")
+      .def_readonly("configuration", &Equilibrium::configuration)
+      .def_readonly("stage", &Equilibrium::stage)
+      .def_readonly("force_n", &Equilibrium::force_n, "indenter force F [N]")
+      .def_readonly("normalized_force", &Equilibrium::normalized_force, "F / (2 pi G H A)")
+      .def_readonly("depth_mm", &Equilibrium::depth_mm, "depth of the tip below the clamp [mm]")
+      .def_readonly("part_three_stretch",
+                    &Equilibrium::part_three_stretch,
+                    "equibiaxial stretch under the tip")
+      .def_readonly("corner_reference_radius_mm",
+                    &Equilibrium::corner_reference_radius_mm,
+                    "R of the material at the corner [mm]")
+      .def_readonly("part_two_top_reference_radius_mm",
+                    &Equilibrium::part_two_top_reference_radius_mm,
+                    "R at the Part II / Part I boundary [mm]")
+      .def_readonly("part_two_length_mm",
+                    &Equilibrium::part_two_length_mm,
+                    "current length of Part II along the side [mm]")
+      .def_readonly("corner_slope_rad",
+                    &Equilibrium::corner_slope_rad,
+                    "slope of Part I where it leaves the indenter [rad]")
+      .def_readonly("corner_tension_ratio",
+                    &Equilibrium::corner_tension_ratio,
+                    "s1 just outside the corner / s1 in Part III (inf for a held membrane)")
+      .def_readonly("max_first_invariant", &Equilibrium::max_first_invariant, "largest I1")
+      .def_readonly("max_first_invariant_reference_radius_mm",
+                    &Equilibrium::max_first_invariant_reference_radius_mm,
+                    "reference radius R of the largest I1 [mm]")
+      .def_readonly("max_first_invariant_radius_mm",
+                    &Equilibrium::max_first_invariant_radius_mm,
+                    "current radius r of the largest I1 [mm]")
+      .def_readonly("clamp_residual", &Equilibrium::clamp_residual)
+      .def_readonly("shooting_evaluations", &Equilibrium::shooting_evaluations)
+      .def_readonly("fields", &Equilibrium::fields)
+      .def("ok", &Equilibrium::ok)
+      .def("__repr__", &equilibrium_repr);
+
+  py::class_<CurvePoint>(m, "CurvePoint", "One point of the loading curve")
+      .def_readonly("depth_mm", &CurvePoint::depth_mm)
+      .def_readonly("force_n", &CurvePoint::force_n)
+      .def_readonly("normalized_force", &CurvePoint::normalized_force)
+      .def_readonly("stage", &CurvePoint::stage)
+      .def_readonly("configuration", &CurvePoint::configuration)
+      .def_readonly("part_three_stretch", &CurvePoint::part_three_stretch)
+      .def_readonly("part_two_length_mm", &CurvePoint::part_two_length_mm)
+      .def_readonly("corner_slope_rad", &CurvePoint::corner_slope_rad)
+      .def_readonly("max_first_invariant", &CurvePoint::max_first_invariant)
+      .def("__repr__", [](const CurvePoint& p) {
+        return fmt::format("<CurvePoint depth_mm={:.6g}, force_n={:.6g}, {}>",
+                           p.depth_mm,
+                           p.force_n,
+                           to_string(p.configuration));
+      });
+
+  py::class_<StickSlipSwitch>(
+      m, "StickSlipSwitch", "The stick -> slip switch along a displacement-controlled curve")
+      .def_readonly("occurs", &StickSlipSwitch::occurs)
+      .def_readonly("depth_mm", &StickSlipSwitch::depth_mm)
+      .def_readonly("force_stuck_n", &StickSlipSwitch::force_stuck_n, "force just before [N]")
+      .def_readonly(
+          "force_sliding_n", &StickSlipSwitch::force_sliding_n, "force just after, sliding [N]")
+      .def("__repr__", [](const StickSlipSwitch& s) {
+        if (!s.occurs) return std::string("<StickSlipSwitch: none>");
+        return fmt::format("<StickSlipSwitch at depth_mm={:.6g}: force_n {:.6g} -> {:.6g}>",
+                           s.depth_mm,
+                           s.force_stuck_n,
+                           s.force_sliding_n);
+      });
+
+  py::class_<PuncturePrediction>(
+      m, "PuncturePrediction", "The predicted puncture point", py::dynamic_attr())
+      .def_readonly("found", &PuncturePrediction::found)
+      .def_readonly("message", &PuncturePrediction::message, "why not, when not found")
+      .def_readonly("force_n", &PuncturePrediction::force_n)
+      .def_readonly("normalized_force", &PuncturePrediction::normalized_force)
+      .def_readonly("depth_mm", &PuncturePrediction::depth_mm)
+      .def_readonly("stage", &PuncturePrediction::stage)
+      .def_readonly("configuration", &PuncturePrediction::configuration)
+      .def_readonly("part_three_stretch", &PuncturePrediction::part_three_stretch)
+      .def_readonly("crack_reference_radius_mm", &PuncturePrediction::crack_reference_radius_mm)
+      .def_readonly("crack_radius_mm", &PuncturePrediction::crack_radius_mm)
+      .def_readonly("crack_location", &PuncturePrediction::crack_location)
+      .def_property_readonly(
+          "state",
+          [](py::object self) { return member_with_problem(self, &PuncturePrediction::state); },
+          "the full state at puncture (Equilibrium)")
+      .def("__repr__", [](const PuncturePrediction& p) {
+        if (!p.found) return "<PuncturePrediction not found: " + p.message + ">";
+        return fmt::format(
+            "<PuncturePrediction force_n={:.6g}, depth_mm={:.6g}, part_three_stretch={:.6g}, {}>",
+            p.force_n,
+            p.depth_mm,
+            p.part_three_stretch,
+            p.crack_location);
+      });
+
+  py::class_<LoadingCurve> curve(
+      m,
+      "LoadingCurve",
+      "The displacement-controlled loading curve; columns are numpy arrays",
+      py::dynamic_attr());
+  curve.def_readonly("status", &LoadingCurve::status)
+      .def_readonly("message", &LoadingCurve::message)
+      .def_readonly("points", &LoadingCurve::points, "list of CurvePoint")
+      .def_readonly("stick_slip", &LoadingCurve::stick_slip)
+      .def_readonly("part_two_onset_depth_mm",
+                    &LoadingCurve::part_two_onset_depth_mm,
+                    "depth where Part II appears [mm], or None")
+      .def_readonly("part_two_onset_force_n",
+                    &LoadingCurve::part_two_onset_force_n,
+                    "force where Part II appears [N], or None")
+      .def_readonly("part_two_onset_at_switch",
+                    &LoadingCurve::part_two_onset_at_switch,
+                    "Part II appears as the held membrane starts sliding")
+      .def_property_readonly(
+          "puncture",
+          [](py::object self) { return member_with_problem(self, &LoadingCurve::puncture); },
+          "the puncture point (PuncturePrediction)")
+      .def("ok", &LoadingCurve::ok)
+      .def("__len__", [](const LoadingCurve& c) { return c.points.size(); })
+      .def_property_readonly(
+          "stage",
+          [](const LoadingCurve& c) {
+            py::list out;
+            for (const auto& p : c.points) out.append(p.stage);
+            return out;
+          },
+          "list of Stage, one per point")
+      .def_property_readonly(
+          "configuration",
+          [](const LoadingCurve& c) {
+            py::list out;
+            for (const auto& p : c.points) out.append(p.configuration);
+            return out;
+          },
+          "list of Configuration, one per point")
+      .def(
+          "columns",
+          [](py::object self) {
+            py::dict d;
+            for (const char* name : {"depth_mm", "force_n", "normalized_force"})
+              d[name] = self.attr(name);
+            py::list stages, configurations;
+            for (const auto& p : self.cast<const LoadingCurve&>().points) {
+              stages.append(to_string(p.stage));
+              configurations.append(py::cast(p.configuration).attr("token"));
+            }
+            d["stage"] = stages;
+            d["configuration"] = configurations;
+            for (const char* name :
+                 {"part_three_stretch", "part_two_length_mm", "corner_slope_rad"})
+              d[name] = self.attr(name);
+            d["max_i1"] = self.attr("max_first_invariant");
+            return d;
+          },
+          "The curve as a dict named like the CLI's CSV columns (stage and configuration as "
+          "lists of their tokens)")
+      .def("__repr__", [](const LoadingCurve& c) {
+        if (!c.ok()) return "<LoadingCurve " + to_string(c.status) + ": " + c.message + ">";
+        return fmt::format("<LoadingCurve {} points, depth_mm 0 to {:.6g}, {}>",
+                           c.points.size(),
+                           c.points.empty() ? 0.0 : c.points.back().depth_mm,
+                           c.puncture.found
+                               ? fmt::format("puncture at force_n={:.6g}", c.puncture.force_n)
+                               : std::string("no puncture"));
+      });
+  curve_column(curve, "depth_mm", &CurvePoint::depth_mm, "indentation depth [mm]");
+  curve_column(curve, "force_n", &CurvePoint::force_n, "indenter force [N]");
+  curve_column(curve, "normalized_force", &CurvePoint::normalized_force, "F / (2 pi G H A)");
+  curve_column(
+      curve, "part_three_stretch", &CurvePoint::part_three_stretch, "stretch under the tip");
+  curve_column(curve,
+               "part_two_length_mm",
+               &CurvePoint::part_two_length_mm,
+               "current length of Part II [mm]");
+  curve_column(curve,
+               "corner_slope_rad",
+               &CurvePoint::corner_slope_rad,
+               "slope of Part I at the indenter [rad]");
+  curve_column(curve, "max_first_invariant", &CurvePoint::max_first_invariant, "largest I1");
+
+  py::class_<StageBoundary>(
+      m, "StageBoundary", "Where the stick criterion switches the stage", py::dynamic_attr())
+      .def_readonly("status", &StageBoundary::status)
+      .def_readonly("message", &StageBoundary::message)
+      .def_readonly("switches", &StageBoundary::switches, "False: stays in its first stage")
+      .def_readonly("first_stage", &StageBoundary::first_stage)
+      .def_readonly("depth_mm", &StageBoundary::depth_mm, "switch depth [mm], when it switches")
+      .def_readonly("force_stuck_n", &StageBoundary::force_stuck_n, "held force at the switch [N]")
+      .def("__repr__", [](const StageBoundary& b) {
+        if (!b.switches)
+          return fmt::format("<StageBoundary: stays in the {} stage>", to_string(b.first_stage));
+        return fmt::format("<StageBoundary: {} until depth_mm={:.6g} (force_n={:.6g})>",
+                           to_string(b.first_stage),
+                           b.depth_mm,
+                           b.force_stuck_n);
+      });
+}
+
+}  // namespace puncture::python

@@ -1,0 +1,13 @@
+// The compiled part of the Python package `puncture` (python/puncture/__init__.py re-exports it).
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_puncture, m) {
+  m.doc() =
+      "Membrane puncture by a flat-ended cylindrical indenter: the C++ solver.  Units: mm, N, "
+      "MPa.  Use the package `puncture`, which re-exports everything here.";
+  m.attr("__version__") = PUNCTURE_VERSION;
+  puncture::python::bind_enums(m);
+  puncture::python::bind_problem(m);
+  puncture::python::bind_results(m);
+  puncture::python::bind_solve(m);
+}

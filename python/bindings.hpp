@@ -1,0 +1,43 @@
+#pragma once
+// Shared pieces of the Python bindings: the registration functions of each file, and the numpy
+// conversions used by several of them.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <vector>
+
+#include "puncture/problem.hpp"
+
+namespace puncture::python {
+
+namespace py = pybind11;
+
+void bind_enums(py::module_& m);
+void bind_problem(py::module_& m);
+void bind_results(py::module_& m);
+void bind_solve(py::module_& m);
+
+// A read-only numpy array viewing `values`, which `owner` (a Python object) keeps alive.
+template <class T>
+py::array_t<T> view(const std::vector<T>& values, py::handle owner) {
+  py::array_t<T> a(static_cast<py::ssize_t>(values.size()), values.data(), owner);
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+// A new numpy array with one value per element of `items`.
+template <class T, class Items, class Get>
+py::array_t<T> column(const Items& items, Get get) {
+  py::array_t<T> a(static_cast<py::ssize_t>(items.size()));
+  auto out = a.template mutable_unchecked<1>();
+  py::ssize_t i = 0;
+  for (const auto& item : items) out(i++) = get(item);
+  return a;
+}
+
+// The validation messages of the library, each prefixed with the attribute it is about (as the
+// CLI prefixes them with the flag), under "invalid input:"; empty when the problem is valid.
+std::string invalid_input_message(const Problem& problem);
+
+}  // namespace puncture::python

@@ -1,0 +1,242 @@
+"""The bindings give the C++ results: the same numbers as the CLI, consistent arrays."""
+
+import copy
+import math
+import threading
+
+import numpy as np
+import pytest
+
+import puncture as pu
+
+CURVE_COLUMNS = ["depth_mm", "force_n", "normalized_force", "stage", "configuration",
+                 "part_three_stretch", "part_two_length_mm", "corner_slope_rad", "max_i1"]
+FIELD_COLUMNS = ["part", "R_mm", "r_mm", "z_mm", "slope_rad", "lambda1", "lambda2", "lambda3",
+                 "s1_mpa", "s2_mpa", "I1", "contact_pressure_mpa", "friction_traction_mpa"]
+
+
+def rel(a, b):
+    return abs(a - b) / max(abs(b), 1e-300)
+
+
+def test_default_puncture_force_matches_cli(cli):
+    prediction = pu.predict_puncture(pu.Problem())
+    from_cli = cli.json("puncture")["puncture"]
+    assert prediction.found
+    assert rel(prediction.force_n, from_cli["force_n"]) < 1e-6
+    assert rel(prediction.depth_mm, from_cli["depth_mm"]) < 1e-6
+    assert rel(prediction.part_three_stretch, from_cli["part_three_stretch"]) < 1e-6
+    assert prediction.crack_location == from_cli["crack_location"]
+    assert prediction.configuration.token == from_cli["configuration"]
+    assert round(prediction.force_n, 4) == 0.6994  # README, docs/model.md
+
+
+def test_paper_eq18_puncture_matches_cli(cli):
+    problem = pu.Problem(part_two_equation="paper-eq18")
+    from_cli = cli.json("puncture", "--part-two-equation", "paper-eq18")["puncture"]
+    prediction = pu.predict_puncture(problem)
+    assert rel(prediction.force_n, from_cli["force_n"]) < 1e-6
+    assert round(prediction.force_n, 4) == 3.3409  # docs/model.md section 10
+
+
+def test_loading_curve_matches_cli(cli):
+    problem = pu.Problem(stick="force:0.3")
+    curve = pu.loading_curve(problem, points=20)
+    from_cli = cli.json("curve", "--points", "20", "--stick", "force:0.3")
+    rows = from_cli["curve"]["points"]
+    columns = curve.columns()
+    assert list(columns) == CURVE_COLUMNS == list(rows[0])
+    assert len(curve) == len(rows) > 20  # the depths, and both states at the switch
+    for name in CURVE_COLUMNS:
+        for ours, theirs in zip(columns[name], (r[name] for r in rows)):
+            if isinstance(theirs, str):
+                assert ours == theirs, name
+            else:
+                assert ours == pytest.approx(theirs, rel=1e-9, abs=1e-12), name
+    s = from_cli["curve"]["stick_slip"]
+    assert curve.stick_slip.occurs and s["occurs"]
+    assert curve.stick_slip.depth_mm == pytest.approx(s["depth_mm"], rel=1e-9)
+    assert curve.stick_slip.force_sliding_n == pytest.approx(s["force_sliding_n"], rel=1e-9)
+    assert curve.part_two_onset_at_switch == from_cli["curve"]["part_two_onset"][
+        "at_stick_slip_switch"]
+    assert curve.puncture.force_n == pytest.approx(from_cli["puncture"]["force_n"], rel=1e-9)
+
+
+def test_state_fields_match_cli(cli):
+    state = pu.solve_at_force(pu.Problem(), 0.3)
+    from_cli = cli.json("state", "--force", "0.3")
+    rows = from_cli["state"]["fields"]
+    columns = state.fields.columns()
+    assert list(columns) == FIELD_COLUMNS == list(rows[0])
+    assert len(state.fields) == len(rows)
+    for name in FIELD_COLUMNS:
+        np.testing.assert_allclose(columns[name], [r[name] for r in rows], rtol=1e-9,
+                                   atol=1e-12, err_msg=name)
+    assert state.depth_mm == pytest.approx(from_cli["state"]["depth_mm"], rel=1e-9)
+    assert state.stage.token == from_cli["request"]["stage"] == "slip"
+
+
+def test_state_at_depth_matches_cli(cli):
+    state = pu.solve_at_depth(pu.Problem(friction=1.95), 20.0)
+    from_cli = cli.json("state", "--depth", "20", "--friction", "1.95")["state"]
+    assert state.force_n == pytest.approx(from_cli["force_n"], rel=1e-9)
+    assert state.configuration.token == from_cli["configuration"]
+
+
+@pytest.mark.parametrize("load,expected", [(0.2, pu.Stage.Stick), (0.5, pu.Stage.Slip)])
+def test_automatic_stage_follows_the_stick_criterion(cli, load, expected):
+    problem = pu.Problem(stick=pu.StickCriterion.force(0.3))
+    state = pu.solve_at_force(problem, load)  # stage="auto"
+    assert state.stage == expected
+    assert cli.json("state", "--force", load, "--stick", "force:0.3")["request"]["stage"] == \
+        expected.token
+
+
+def test_fields_are_consistent_finite_arrays():
+    state = pu.solve_at_force(pu.Problem(), 0.5)
+    f = state.fields
+    n = len(f)
+    assert n > 200
+    names = ["reference_radius_mm", "radius_mm", "deflection_mm", "slope_rad", "radial_stretch",
+             "hoop_stretch", "thickness_stretch", "radial_stress_mpa", "hoop_stress_mpa",
+             "first_invariant", "contact_pressure_mpa", "friction_traction_mpa"]
+    for name in names:
+        a = getattr(f, name)
+        assert isinstance(a, np.ndarray) and a.dtype == np.float64 and a.shape == (n,), name
+        assert np.all(np.isfinite(a)), name
+        assert not a.flags.writeable, name
+    assert f.part.shape == (n,) and set(f.part.tolist()) == {1, 2, 3}
+    assert np.all(np.diff(f.reference_radius_mm) >= 0)
+    assert f.reference_radius_mm[0] == 0 and f.reference_radius_mm[-1] == pytest.approx(25.0)
+    assert np.all(np.diff(f.part) <= 0)  # III, then II, then I
+    np.testing.assert_allclose(f.thickness_stretch, 1 / (f.radial_stretch * f.hoop_stretch),
+                               rtol=1e-12)
+    np.testing.assert_allclose(f.first_invariant,
+                               pu.first_invariant(f.radial_stretch, f.hoop_stretch), rtol=1e-12)
+    assert f.first_invariant.max() == pytest.approx(state.max_first_invariant, rel=1e-9)
+
+
+def test_arrays_outlive_their_result():
+    radius = pu.solve_at_force(pu.Problem(), 0.4).fields.radius_mm
+    import gc
+
+    gc.collect()
+    assert np.all(np.isfinite(radius)) and radius[-1] == pytest.approx(25.0)
+
+
+def test_curve_columns_are_consistent():
+    curve = pu.loading_curve(pu.Problem(), points=30)
+    assert curve.ok() and len(curve) == 30 and len(curve.points) == 30
+    for name in ["depth_mm", "force_n", "normalized_force", "part_three_stretch",
+                 "part_two_length_mm", "corner_slope_rad", "max_first_invariant"]:
+        a = getattr(curve, name)
+        assert a.shape == (30,) and np.all(np.isfinite(a)), name
+    assert len(curve.stage) == len(curve.configuration) == 30
+    assert np.all(np.diff(curve.depth_mm) > 0)
+    np.testing.assert_allclose(curve.normalized_force * curve.problem.force_scale_n,
+                               curve.force_n, rtol=1e-12)
+    assert curve.depth_mm[-1] == pytest.approx(curve.puncture.depth_mm, rel=1e-12)
+    assert curve.max_first_invariant[-1] == pytest.approx(95.2, rel=1e-6)
+    assert curve.part_two_onset_depth_mm == pytest.approx(15.469, abs=1e-3)
+
+
+def test_progress_callback_and_threads():
+    calls = []
+    curve = pu.loading_curve(pu.Problem(), points=12, progress=lambda d, t: calls.append((d, t)))
+    assert calls[-1] == (12, 12) and len(calls) >= 11
+    # The solver runs without the GIL: threads give the same results.
+    results = {}
+
+    def run(mu):
+        results[mu] = pu.predict_puncture(pu.Problem(friction=mu)).force_n
+
+    threads = [threading.Thread(target=run, args=(mu,)) for mu in (0.18, 1.95)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert results[0.18] == pytest.approx(curve.puncture.force_n, rel=1e-12)
+    assert results[1.95] == pytest.approx(pu.predict_puncture(pu.Problem(friction=1.95)).force_n,
+                                          rel=1e-12)
+
+
+def test_results_carry_their_problem():
+    problem = pu.Problem(geometry=pu.Geometry(indenter_radius_mm=1.0))
+    curve = pu.loading_curve(problem, points=5)
+    problem.friction = 0.5  # the result keeps its own copy
+    assert curve.problem.friction == 0.18
+    assert curve.problem.geometry.indenter_radius_mm == 1.0
+    assert curve.puncture.problem.geometry.indenter_radius_mm == 1.0
+    assert curve.puncture.state.problem.geometry.indenter_radius_mm == 1.0
+
+
+def test_problem_defaults_match_cli(cli):
+    inputs = cli.json("puncture")["inputs"]
+    p = pu.Problem()
+    assert p.geometry.clamp_radius_mm == inputs["clamp_radius_mm"]
+    assert p.geometry.indenter_radius_mm == inputs["indenter_radius_mm"]
+    assert p.geometry.thickness_mm == inputs["thickness_mm"]
+    assert p.material.shear_modulus_mpa == inputs["material"]["shear_modulus_mpa"]
+    assert p.material.law_name == inputs["material"]["law"]
+    assert p.material.j_lim == inputs["material"]["j_lim"]
+    assert p.friction == inputs["friction"] and p.critical_i1 == inputs["critical_i1"]
+    assert p.stick.rule.token == inputs["stick"]["rule"]
+    assert p.part_two_equation.token == inputs["part_two_equation"]
+    assert p.force_scale_n == pytest.approx(inputs["force_scale_n"], rel=1e-15)
+
+
+def test_problem_editing_and_copies():
+    p = pu.Problem()
+    p.geometry.indenter_radius_mm = 1.0
+    p.material = pu.Material.mooney_rivlin(shear_modulus_mpa=0.1, alpha=0.2)
+    p.stick = "depth:3"
+    p.stick.threshold = 4.0
+    p.part_two_equation = pu.PartTwoEquation.PaperEq18
+    assert p.geometry.indenter_radius_mm == 1.0
+    assert p.material.law_name == "mooney-rivlin" and p.material.alpha == 0.2
+    assert p.material.j_lim is None and isinstance(p.material.law, pu.MooneyRivlin)
+    assert p.stick.rule == pu.StickRule.Depth and p.stick.threshold == 4.0
+    assert p.part_two_equation.token == "paper-eq18"
+    q = copy.deepcopy(p)
+    q.geometry.indenter_radius_mm = 3.0
+    assert p.geometry.indenter_radius_mm == 1.0
+    assert "mooney-rivlin" in p.material.description
+    assert repr(pu.Problem()).startswith("Problem(geometry=Geometry(clamp_radius_mm=25")
+    assert pu.StickCriterion("edge-tension:0.02").rule == pu.StickRule.EdgeTension
+    assert pu.Problem(stick="always").stick.rule == pu.StickRule.Always
+    assert pu.Problem(material=pu.Material(law=pu.NeoHookean())).material.max_first_invariant \
+        == math.inf
+
+
+def test_material_stresses():
+    stretch = np.linspace(1.0, 8.0, 15)
+    neo = pu.Material.neo_hookean(shear_modulus_mpa=0.06)
+    np.testing.assert_allclose(neo.uniaxial_stress_mpa(stretch), 0.06 * (stretch - stretch**-2),
+                               rtol=1e-12)
+    np.testing.assert_allclose(neo.equibiaxial_stress_mpa(stretch),
+                               0.06 * (stretch - stretch**-5), rtol=1e-12)
+    gent = pu.Material.gent()
+    assert gent.max_first_invariant == 128.0
+    # Gent stiffens: above neo-Hookean, equal at small strain
+    assert np.all(gent.uniaxial_stress_mpa(stretch[1:]) > neo.uniaxial_stress_mpa(stretch[1:]))
+    assert gent.uniaxial_stress_mpa(1.001) == pytest.approx(neo.uniaxial_stress_mpa(1.001),
+                                                            rel=1e-3)
+    s1 = gent.radial_stress_mpa(3.0, 2.0)
+    s2 = gent.hoop_stress_mpa(2.0, 3.0)
+    assert s1 == pytest.approx(s2, rel=1e-14)  # symmetry of the law
+
+
+def test_stick_slip_boundary():
+    b = pu.stick_slip_boundary(pu.Problem(stick="force:0.3"))
+    assert b.switches and b.first_stage == pu.Stage.Stick
+    assert b.force_stuck_n == pytest.approx(0.3, rel=1e-9)
+    assert b.depth_mm == pytest.approx(16.7776, abs=1e-3)
+    none = pu.stick_slip_boundary(pu.Problem())
+    assert not none.switches and none.first_stage == pu.Stage.Slip
+
+
+def test_solver_options_are_used():
+    options = pu.SolverOptions()
+    options.record_fields = False
+    state = pu.solve_at_force(pu.Problem(), 0.3, options=options)
+    assert len(state.fields) == 0 and state.ok()
