@@ -8,6 +8,7 @@
 #include "command_calibrate.hpp"
 #include "commands.hpp"
 #include "output_options.hpp"
+#include "plot.hpp"
 #include "problem_options.hpp"
 
 namespace {
@@ -33,6 +34,7 @@ constexpr const char* kFooter =
     "  puncture state --force 2 --format json\n"
     "  puncture state --depth 8 --stick force:0.5 --stage auto\n"
     "  puncture puncture --indenter-radius 1 --material neo-hookean\n"
+    "  puncture curve --plot curve.png            the curve drawn, stages shaded\n"
     "  puncture calibrate friction --indenter-radius 1 --puncture-force 1.72 --hole-ratio 1.58\n"
     "  puncture fit uniaxial tensile.csv --material gent\n"
     "Config file (--config FILE), one 'key = value' per line, keys are the long flag\n"
@@ -40,7 +42,10 @@ constexpr const char* kFooter =
     "  indenter-radius = 1\n"
     "  friction = 1.95\n"
     "  stick = \"force:0.5\"\n"
-    "Exit codes: 0 success, 1 invalid input, 2 the solver gave no usable result.";
+    "Plots (--plot) run Python 3 with matplotlib (Debian: python3-matplotlib;\n"
+    "another interpreter: PUNCTURE_PYTHON=/path/to/python3).\n"
+    "Exit codes: 0 success, 1 invalid input, 2 the solver gave no usable result,\n"
+    "3 the plot could not be drawn (no Python or matplotlib).";
 
 constexpr const char* kSubcommandFooter =
     "The physical, curve and output flags (see puncture --help) may also be given.";
@@ -69,6 +74,15 @@ int main(int argc, char** argv) {
     add_problem_options(app, problem_flags);
     add_curve_options(app, curve_flags);
     add_output_options(app, output_flags);
+    std::string plot_path;
+    auto* plot_option =
+        app.add_option("--plot",
+                       plot_path,
+                       "Also draw the result to FILE (.png, .svg or .pdf) with matplotlib:\n"
+                       "curve: force against depth, stages shaded, puncture marked;\n"
+                       "state: deformed profile, stretches and I1 along the radius")
+            ->group("Output")
+            ->type_name("FILE");
     app.add_subcommand("curve", "Loading curve from zero depth to puncture (the default)")
         ->footer(kSubcommandFooter);
     auto* state = app.add_subcommand(
@@ -100,6 +114,14 @@ int main(int argc, char** argv) {
     const auto problem = make_problem(problem_flags);
     const auto format = format_of(output_flags);
     check_writable(output_flags);
+    const bool plot = plot_option->count() > 0;
+    if (plot) {
+      if (puncture->parsed())
+        throw InputError(
+            "--plot: draws a curve or a state; the 'puncture' subcommand has nothing to draw "
+            "(use 'puncture curve --plot FILE')");
+      check_plot_target(plot_path);
+    }
     std::string text;
     if (state->parsed())
       text = run_state(problem, state_flags, format);
@@ -108,6 +130,15 @@ int main(int argc, char** argv) {
     else
       text = run_curve(problem, curve_flags, format);
     write_output(output_flags, text);
+    if (plot) {
+      // The plotting script reads the JSON output; computed again unless that is the format
+      // asked for (the result is deterministic, and a curve takes milliseconds).
+      const bool by_state = state->parsed();
+      const std::string json = format == Format::Json ? text
+                               : by_state ? run_state(problem, state_flags, Format::Json)
+                                          : run_curve(problem, curve_flags, Format::Json);
+      run_plot_script(by_state ? "state" : "curve", json, plot_path);
+    }
     return kExitOk;
   } catch (const InputError& e) {
     fmt::print(stderr, "puncture: error: {}\n", e.what());
@@ -115,6 +146,9 @@ int main(int argc, char** argv) {
   } catch (const SolveError& e) {
     fmt::print(stderr, "puncture: solver failure: {}\n", e.what());
     return kExitSolverFailure;
+  } catch (const PlotError& e) {
+    fmt::print(stderr, "puncture: plot failed: {}\n", e.what());
+    return kExitPlotFailure;
   } catch (const std::exception& e) {
     fmt::print(stderr, "puncture: internal error: {}\n", e.what());
     return kExitSolverFailure;

@@ -8,6 +8,7 @@ moduli and stresses in MPa.
     problem = puncture.Problem()                      # the paper's membrane, 2 mm indenter
     curve = puncture.loading_curve(problem)           # depth to puncture, numpy columns
     state = puncture.solve_at_force(problem, 0.5)     # one equilibrium with its fields
+    puncture.plots.loading_curve(curve, "curve.png")  # matplotlib figures (puncture.plots)
 
 Invalid input raises ValueError naming the attribute and its allowed range; a solve that does
 not converge raises SolverError (a RuntimeError) with .status and .message.
@@ -70,6 +71,7 @@ __all__ = [
     "first_invariant",
     "force_scale_n",
     "loading_curve",
+    "plots",
     "predict_puncture",
     "solve_at_depth",
     "solve_at_force",
@@ -83,3 +85,11 @@ for _name in __all__:
         _obj.__module__ = __name__
 del _name, _obj
 
+
+def __getattr__(name):
+    # `puncture.plots` without importing matplotlib for users who never plot.
+    if name == "plots":
+        import importlib
+
+        return importlib.import_module(".plots", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,0 +1,58 @@
+"""Draws the `puncture` command-line tool's results; the CLI runs it for --plot.
+
+    python3 plot_cli.py curve   CURVE.json   OUT.png|svg|pdf   (puncture curve --format json)
+    python3 plot_cli.py state   STATE.json   OUT.png|svg|pdf   (puncture state --format json)
+
+Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2 bad usage,
+3 numpy or matplotlib missing, 1 any other failure; the reason goes to stderr.
+"""
+
+import json
+import sys
+
+KINDS = ("curve", "state")
+EXIT_USAGE = 2
+EXIT_MISSING_MODULE = 3
+
+
+def _modules():
+    if __package__:
+        from . import plots
+    else:  # run as a script: its directory is on sys.path
+        import plots
+    return plots
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) != 3 or argv[0] not in KINDS:
+        print("usage: plot_cli.py curve|state DATA.json OUTPUT", file=sys.stderr)
+        return EXIT_USAGE
+    kind, data_path, target = argv
+    try:
+        import matplotlib  # noqa: F401
+        import numpy  # noqa: F401
+    except ImportError as e:
+        print(
+            f"puncture: plot: {sys.executable} cannot import {e.name or e}: install it (Debian: "
+            "apt-get install python3-matplotlib python3-numpy) or set PUNCTURE_PYTHON to a "
+            "Python 3 that has numpy and matplotlib",
+            file=sys.stderr,
+        )
+        return EXIT_MISSING_MODULE
+    try:
+        plots = _modules()
+        with open(data_path, encoding="utf-8") as f:
+            data = json.load(f)
+        if kind == "curve":
+            plots.loading_curve(data, target)
+        else:
+            plots.state_overview(data, target)
+    except Exception as e:  # noqa: BLE001 - reported, not hidden
+        print(f"puncture: plot: {type(e).__name__}: {e}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

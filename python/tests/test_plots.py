@@ -1,0 +1,180 @@
+"""Figures from the bindings, from the CLI's JSON, and through the CLI's --plot."""
+
+import json
+import os
+import struct
+import subprocess
+import sys
+
+import pytest
+
+import puncture as pu
+
+pytest.importorskip("matplotlib")
+from puncture import plots  # noqa: E402
+
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def png_size(path):
+    with open(path, "rb") as f:
+        head = f.read(24)
+    assert head[:8] == PNG_SIGNATURE, f"{path} is not a PNG"
+    return struct.unpack(">II", head[16:24])
+
+
+def check_png(path, min_width=800):
+    width, height = png_size(path)
+    assert width >= min_width and height >= 500
+    assert os.path.getsize(path) > 20_000  # drawn, not blank
+
+
+def check_svg(path, label="[mm]"):
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    assert "<svg" in text and "</svg>" in text
+    assert "<text" in text and label in text  # labels kept as text
+
+
+@pytest.fixture(scope="module")
+def default_curve():
+    return pu.loading_curve(pu.Problem(), points=60)
+
+
+def test_loading_curve_png_and_svg(tmp_path, default_curve):
+    fig = plots.loading_curve(default_curve, tmp_path / "curve.png")
+    plots.loading_curve(default_curve, tmp_path / "curve.svg")
+    check_png(tmp_path / "curve.png")
+    check_svg(tmp_path / "curve.svg")
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == "indentation depth δ [mm]"
+    assert ax.get_ylabel() == "indenter force F [N]"
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert "slip without Part II" in labels and "slip with Part II" in labels
+    assert any("puncture" in label for label in labels)
+
+
+def test_loading_curve_with_a_stick_stage(tmp_path):
+    curve = pu.loading_curve(pu.Problem(stick="force:0.3"), points=40)
+    fig = plots.loading_curve(curve, tmp_path / "stick.png")
+    check_png(tmp_path / "stick.png")
+    labels = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert "stick (held at the edge)" in labels
+    texts = [t.get_text() for t in fig.axes[0].texts]
+    assert any(t.startswith("stick → slip") for t in texts)
+
+
+def test_profile_of_several_loads(tmp_path, default_curve):
+    problem = pu.Problem()
+    states = [pu.solve_at_force(problem, f) for f in (0.1, 0.3)] + [default_curve.puncture]
+    fig = plots.profile(states, tmp_path / "profile.png")
+    plots.profile(states, tmp_path / "profile.svg")
+    check_png(tmp_path / "profile.png")
+    check_svg(tmp_path / "profile.svg")
+    whole, tip = fig.axes[:2]
+    assert whole.get_xlabel() == "radius r [mm]" and "[mm]" in whole.get_ylabel()
+    assert whole.get_aspect() == 1.0 and tip.get_aspect() == 1.0  # to scale
+    # the indenter, to scale: a rectangle 2a wide
+    rectangles = [p for p in whole.patches if type(p).__name__ == "Rectangle"]
+    assert any(abs(r.get_width() - 4.0) < 1e-12 for r in rectangles)
+
+
+def test_stretch_fields(tmp_path):
+    state = pu.solve_at_force(pu.Problem(), 0.5)
+    for scale in ("log", "linear"):
+        fig = plots.stretch_fields(state, tmp_path / f"fields_{scale}.png", xscale=scale)
+        check_png(tmp_path / f"fields_{scale}.png")
+    top, bottom = fig.axes[:2]
+    assert bottom.get_xlabel() == "reference radius R [mm]"
+    labels = [t.get_text() for t in bottom.get_legend().get_texts()]
+    assert "critical I1 = 95.2" in labels
+    plots.stretch_fields(state, tmp_path / "fields.svg")
+    check_svg(tmp_path / "fields.svg")
+
+
+def test_plots_of_held_and_unloaded_states(tmp_path):
+    held = pu.solve_at_force(pu.Problem(stick="always"), 0.5)
+    plots.state_overview(held, tmp_path / "held.png")
+    check_png(tmp_path / "held.png")
+    flat = pu.solve_at_depth(pu.Problem(), 0.0)
+    plots.state_overview(flat, tmp_path / "flat.png")
+    check_png(tmp_path / "flat.png")
+
+
+def test_plots_from_cli_json(tmp_path, cli):
+    curve_json = cli.json("curve", "--points", "30", "--stick", "depth:10")
+    plots.loading_curve(curve_json, tmp_path / "curve.png")
+    check_png(tmp_path / "curve.png")
+    state_json = cli.json("state", "--force", "0.4")
+    plots.profile(state_json, tmp_path / "profile.png")
+    plots.stretch_fields(state_json, tmp_path / "fields.png")
+    plots.state_overview(state_json, tmp_path / "state.png")
+    for name in ("profile", "fields", "state"):
+        check_png(tmp_path / f"{name}.png")
+
+
+def test_bad_file_name_is_a_value_error(tmp_path, default_curve):
+    with pytest.raises(ValueError, match=r"must end in \.png, \.svg or \.pdf"):
+        plots.loading_curve(default_curve, tmp_path / "curve.jpg")
+    with pytest.raises(ValueError, match="xscale"):
+        plots.stretch_fields(default_curve.puncture, tmp_path / "x.png", xscale="cubic")
+
+
+@pytest.mark.parametrize("suffix", [".png", ".svg"])
+def test_cli_plot_curve(tmp_path, cli, suffix):
+    target = tmp_path / f"curve{suffix}"
+    rc, out, err = cli.run("curve", "--points", "30", "--format", "csv", "--plot", target)
+    assert rc == 0, err
+    assert out.startswith("depth_mm,force_n,")  # the results are still written
+    (check_png if suffix == ".png" else check_svg)(target)
+
+
+def test_cli_plot_state(tmp_path, cli):
+    target = tmp_path / "state.png"
+    rc, out, err = cli.run("state", "--depth", "20", "--plot", target)
+    assert rc == 0, err
+    assert "Equilibrium at depth 20 mm" in out
+    check_png(target)
+
+
+def test_cli_plot_rejections(tmp_path, cli):
+    rc, _, err = cli.run("puncture", "--plot", tmp_path / "p.png")
+    assert rc == 1 and "--plot: draws a curve or a state" in err
+    rc, _, err = cli.run("curve", "--plot", tmp_path / "p.jpg")
+    assert rc == 1 and "--plot: the file name must end in .png, .svg or .pdf" in err
+    rc, _, err = cli.run("curve", "--plot", tmp_path / "no" / "dir" / "p.png")
+    assert rc == 1 and "--plot: cannot open" in err
+
+
+def test_cli_plot_without_python_or_matplotlib(tmp_path, cli):
+    target = tmp_path / "curve.png"
+    rc, out, err = cli.run("curve", "--plot", target, env={"PUNCTURE_PYTHON": "/no/such/python"})
+    assert rc == 3 and out == ""
+    assert "plot failed: plots need Python 3 with matplotlib: cannot run the interpreter " \
+           "'/no/such/python'" in err
+    # A Python without its site packages: no numpy, no matplotlib.
+    bare = tmp_path / "bare-python"
+    bare.write_text(f'#!/bin/sh\nexec {sys.executable} -S "$@"\n')
+    bare.chmod(0o755)
+    rc, out, err = cli.run("curve", "--points", "5", "--format", "csv", "--plot", target,
+                           env={"PUNCTURE_PYTHON": str(bare)})
+    assert rc == 3
+    assert out.startswith("depth_mm,")
+    assert "cannot import" in err and "python3-matplotlib" in err
+    assert f"plot failed: '{bare}' lacks numpy or matplotlib" in err
+    assert not target.exists()
+
+
+def test_plot_script_runs_without_the_extension(tmp_path, cli):
+    """plot_cli.py, as the CLI runs it: a script next to plots.py, no compiled module."""
+    data = tmp_path / "curve.json"
+    data.write_text(json.dumps(cli.json("curve", "--points", "20")))
+    script = os.path.join(os.path.dirname(plots.__file__), "plot_cli.py")
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    p = subprocess.run([sys.executable, script, "curve", str(data), str(tmp_path / "c.png")],
+                       capture_output=True, text=True, env=env)
+    assert p.returncode == 0, p.stderr
+    check_png(tmp_path / "c.png")
+    p = subprocess.run([sys.executable, script, "bogus"], capture_output=True, text=True, env=env)
+    assert p.returncode == 2 and "usage" in p.stderr
+
