@@ -7,6 +7,7 @@
 #include "cli_error.hpp"
 #include "command_calibrate.hpp"
 #include "commands.hpp"
+#include "figures.hpp"
 #include "output_options.hpp"
 #include "plot.hpp"
 #include "problem_options.hpp"
@@ -35,6 +36,7 @@ constexpr const char* kFooter =
     "  puncture state --depth 8 --stick force:0.5 --stage auto\n"
     "  puncture puncture --indenter-radius 1 --material neo-hookean\n"
     "  puncture curve --plot curve.png            the curve drawn, stages shaded\n"
+    "  puncture figures --out figures            the paper's Figs. 11-13, PNG and SVG\n"
     "  puncture calibrate friction --indenter-radius 1 --puncture-force 1.72 --hole-ratio 1.58\n"
     "  puncture fit uniaxial tensile.csv --material gent\n"
     "Config file (--config FILE), one 'key = value' per line, keys are the long flag\n"
@@ -42,7 +44,7 @@ constexpr const char* kFooter =
     "  indenter-radius = 1\n"
     "  friction = 1.95\n"
     "  stick = \"force:0.5\"\n"
-    "Plots (--plot) run Python 3 with matplotlib (Debian: python3-matplotlib;\n"
+    "Plots (--plot, figures) run Python 3 with matplotlib (Debian: python3-matplotlib;\n"
     "another interpreter: PUNCTURE_PYTHON=/path/to/python3).\n"
     "Exit codes: 0 success, 1 invalid input, 2 the solver gave no usable result,\n"
     "3 the plot could not be drawn (no Python or matplotlib).";
@@ -91,6 +93,15 @@ int main(int argc, char** argv) {
     add_state_options(*state, state_flags);
     auto* puncture = app.add_subcommand("puncture", "The predicted puncture point alone");
     puncture->footer(kSubcommandFooter);
+    FiguresFlags figures_flags;
+    auto* figures = app.add_subcommand(
+        "figures",
+        "The paper's analytical figures (Figs. 11, 12(a), 12(b), 13(a)-(e)) as PNG and SVG\n"
+        "in --out DIR, with the ring-balance and the printed Eq. 18 Part II equations");
+    figures->footer(
+        "The membrane is the one the physical flags give (default: the paper's); each figure\n"
+        "sets its own indenter radius and friction.  Needs Python 3 with matplotlib.");
+    add_figures_options(*figures, figures_flags);
     CalibrationFlags calibration_flags;
     add_calibration_commands(app, calibration_flags);
 
@@ -112,6 +123,16 @@ int main(int argc, char** argv) {
       return kExitOk;
     }
     const auto problem = make_problem(problem_flags);
+    if (figures->parsed()) {
+      for (const char* flag : {"--output", "--format", "--plot"})
+        if (app.get_option(flag)->count() > 0)
+          throw InputError(fmt::format(
+              "{}: does not apply to 'figures', which writes its images and their data to "
+              "--out DIR",
+              flag));
+      write_output(output_flags, run_figures(problem, curve_flags, figures_flags));
+      return kExitOk;
+    }
     const auto format = format_of(output_flags);
     check_writable(output_flags);
     const bool plot = plot_option->count() > 0;

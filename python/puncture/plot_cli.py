@@ -1,7 +1,8 @@
-"""Draws the `puncture` command-line tool's results; the CLI runs it for --plot.
+"""Draws the `puncture` command-line tool's results; the CLI runs it for --plot and figures.
 
     python3 plot_cli.py curve   CURVE.json   OUT.png|svg|pdf   (puncture curve --format json)
     python3 plot_cli.py state   STATE.json   OUT.png|svg|pdf   (puncture state --format json)
+    python3 plot_cli.py figures FIGURES.json OUT_DIR           (puncture figures)
 
 Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2 bad usage,
 3 numpy or matplotlib missing, 1 any other failure; the reason goes to stderr.
@@ -10,23 +11,24 @@ Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2
 import json
 import sys
 
-KINDS = ("curve", "state")
+KINDS = ("curve", "state", "figures")
 EXIT_USAGE = 2
 EXIT_MISSING_MODULE = 3
 
 
 def _modules():
     if __package__:
-        from . import plots
+        from . import paper_figures, plots
     else:  # run as a script: its directory is on sys.path
+        import paper_figures
         import plots
-    return plots
+    return plots, paper_figures
 
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 3 or argv[0] not in KINDS:
-        print("usage: plot_cli.py curve|state DATA.json OUTPUT", file=sys.stderr)
+        print("usage: plot_cli.py curve|state|figures DATA.json OUTPUT", file=sys.stderr)
         return EXIT_USAGE
     kind, data_path, target = argv
     try:
@@ -41,13 +43,16 @@ def main(argv=None):
         )
         return EXIT_MISSING_MODULE
     try:
-        plots = _modules()
+        plots, paper_figures = _modules()
         with open(data_path, encoding="utf-8") as f:
             data = json.load(f)
         if kind == "curve":
             plots.loading_curve(data, target)
-        else:
+        elif kind == "state":
             plots.state_overview(data, target)
+        else:
+            for path in paper_figures.draw_all(data, target):
+                print(path)
     except Exception as e:  # noqa: BLE001 - reported, not hidden
         print(f"puncture: plot: {type(e).__name__}: {e}", file=sys.stderr)
         return 1

@@ -1,4 +1,4 @@
-"""Figures from the bindings, from the CLI's JSON, and through the CLI's --plot."""
+"""Figures from the bindings, from the CLI's JSON, and through the CLI's --plot and figures."""
 
 import json
 import os
@@ -178,3 +178,30 @@ def test_plot_script_runs_without_the_extension(tmp_path, cli):
     p = subprocess.run([sys.executable, script, "bogus"], capture_output=True, text=True, env=env)
     assert p.returncode == 2 and "usage" in p.stderr
 
+
+def test_cli_figures(tmp_path, cli):
+    out_dir = tmp_path / "figures"
+    rc, out, err = cli.run("figures", "--out", out_dir, "--points", "40")
+    assert rc == 0, err
+    names = ["fig11", "fig12a", "fig12b", "fig13a", "fig13b", "fig13c", "fig13d", "fig13e",
+             "fig13"]
+    for name in names:
+        check_png(out_dir / f"{name}.png", min_width=900)
+        label = {"fig11": "stretch λ", "fig12b": "friction coefficient"}.get(name, "[mm]")
+        check_svg(out_dir / f"{name}.svg", label=label)
+        assert str(out_dir / f"{name}.png") in out
+    data = json.loads((out_dir / "figures-data.json").read_text())
+    panels = {p["label"]: p for p in data["fig13"]["panels"]}
+    assert set(panels) == set("abcde")
+    ring, eq18 = panels["b"]["curves"]
+    assert ring["part_two_equation"] == "ring-balance" and eq18["part_two_equation"] == \
+        "paper-eq18"
+    # the same puncture points as the library (docs/model.md section 10)
+    assert ring["puncture"]["force_n"] == pytest.approx(
+        pu.predict_puncture(pu.Problem()).force_n, rel=1e-9)
+    assert eq18["puncture"]["force_n"] == pytest.approx(3.3409, abs=1e-4)
+    assert panels["e"]["friction"] == 1.95 and panels["e"]["indenter_radius_mm"] == 1.0
+    series = data["fig12b"]["series"]
+    assert sorted({s["radius_ratio"] for s in series}) == [0.04, 0.08, 0.12]
+    rc, _, err = cli.run("figures", "--out", out_dir, "--format", "json")
+    assert rc == 1 and "--format: does not apply to 'figures'" in err

@@ -1,0 +1,262 @@
+// `puncture figures`: data of the paper's analytical figures, drawn by python/puncture.
+//   Fig. 11      uniaxial nominal stress against stretch of the material (Gent in the paper)
+//   Fig. 12(a)   I1 along the radius near the tip, several friction coefficients, F/2piGHA = 1,
+//                indenter radius 0.08 A
+//   Fig. 12(b)   Part III stretch against friction for a = 0.04, 0.08, 0.12 A, F/2piGHA = 1
+//   Fig. 13(a-e) loading curves to puncture: a = 1-4 mm lubricated (mu' = 0.18), 1 mm dry (1.95)
+// Figs. 12 and 13 are computed with the ring-balance Part II equation and with the paper's
+// printed Eq. 18.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <system_error>
+
+#include "cli_error.hpp"
+#include "figures.hpp"
+#include "names.hpp"
+#include "plot.hpp"
+#include "progress.hpp"
+#include "puncture/equilibrium.hpp"
+#include "puncture/loading_curve.hpp"
+
+namespace puncture::cli {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+constexpr std::array kEquations{PartTwoEquation::RingBalance, PartTwoEquation::PaperEq18};
+constexpr std::array kFig12aFriction{0.0, 0.18, 0.5, 1.0, 1.95};
+constexpr std::array kFig12bRadiusRatio{0.04, 0.08, 0.12};
+constexpr double kFig12RadiusRatio = 0.08;
+constexpr double kFig12NormalizedForce = 1.0;
+constexpr double kFig12bMaxFriction = 2.5;
+constexpr int kFig12bSteps = 50;
+
+struct Fig13Panel {
+  const char* label;
+  double indenter_radius_mm;
+  double friction;
+};
+constexpr std::array<Fig13Panel, 5> kFig13{{
+    {"a", 1.0, 0.18},
+    {"b", 2.0, 0.18},
+    {"c", 3.0, 0.18},
+    {"d", 4.0, 0.18},
+    {"e", 1.0, 1.95},
+}};
+
+// A number, or null when it is not finite (a failed or unbounded quantity).
+json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+json inputs_json(const Problem& p) {
+  json material = {{"law", material_token(p.material.law)},
+                   {"shear_modulus_mpa", p.material.shear_modulus_mpa}};
+  if (const auto* gent = std::get_if<Gent>(&p.material.law)) material["j_lim"] = gent->j_lim;
+  if (const auto* mr = std::get_if<MooneyRivlin>(&p.material.law)) material["alpha"] = mr->alpha;
+  return {{"clamp_radius_mm", p.geometry.clamp_radius_mm},
+          {"thickness_mm", p.geometry.thickness_mm},
+          {"material", material},
+          {"material_description", describe(p.material)},
+          {"critical_i1", p.critical_i1},
+          {"stick", to_string(p.stick.rule)},
+          {"force_scale_n", force_scale_n(p)}};
+}
+
+// The stretch at which uniaxial tension locks the law (I1 = max I1), or `cap` if it never does.
+double uniaxial_locking_stretch(const MaterialLaw& law, double cap) {
+  const double i1_max = max_first_invariant(law);
+  auto i1 = [](double l) { return l * l + 2.0 / l; };
+  if (!std::isfinite(i1_max) || i1(cap) < i1_max) return cap;
+  double lo = 1.0, hi = cap;
+  for (int k = 0; k < 200; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (i1(mid) < i1_max ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+json fig11(const Problem& base) {
+  constexpr int kPoints = 400;
+  constexpr double kCap = 12.0;
+  const double top = uniaxial_locking_stretch(base.material.law, kCap);
+  const double g = base.material.shear_modulus_mpa;
+  json stretch = json::array(), stress = json::array(), neo = json::array();
+  for (int k = 0; k <= kPoints; ++k) {
+    // denser towards the locking stretch, where the stress rises steeply
+    const double t = static_cast<double>(k) / kPoints;
+    const double l = 1.0 + (top - 1.0) * std::min(1.0 - (1.0 - t) * (1.0 - t), 0.9999);
+    stretch.push_back(l);
+    stress.push_back(number(g * uniaxial_stress(base.material.law, l)));
+    neo.push_back(number(g * uniaxial_stress(NeoHookean{}, l)));
+  }
+  return {{"material", describe(base.material)},
+          {"shear_modulus_mpa", g},
+          {"locking_stretch", number(top < kCap ? top : NAN)},
+          {"stretch", stretch},
+          {"stress_mpa", stress},
+          {"neo_hookean_stress_mpa", neo}};
+}
+
+json failure(Status status, const std::string& message) {
+  return {{"status", to_string(status)}, {"message", message}};
+}
+
+json fig12a(const Problem& base) {
+  json cases = json::array();
+  Problem p = base;
+  p.geometry.indenter_radius_mm = kFig12RadiusRatio * base.geometry.clamp_radius_mm;
+  const double force = kFig12NormalizedForce * force_scale_n(p);
+  for (const auto equation : kEquations)
+    for (const double mu : kFig12aFriction) {
+      p.friction = mu;
+      p.part_two_equation = equation;
+      json c = {{"friction", mu}, {"part_two_equation", to_string(equation)}};
+      const auto e = solve_at_force(p, force, Stage::Slip);
+      if (!e.ok()) {
+        c["failure"] = failure(e.status, e.message);
+      } else {
+        json r = json::array(), i1 = json::array(), part = json::array();
+        for (std::size_t i = 0; i < e.fields.size(); ++i) {
+          r.push_back(e.fields.reference_radius_mm[i]);
+          i1.push_back(number(e.fields.first_invariant[i]));
+          part.push_back(e.fields.part[i]);
+        }
+        c["configuration"] = configuration_token(e.configuration);
+        c["part_three_stretch"] = number(e.part_three_stretch);
+        c["corner_reference_radius_mm"] = e.corner_reference_radius_mm;
+        c["max_i1"] = number(e.max_first_invariant);
+        c["R_mm"] = r;
+        c["I1"] = i1;
+        c["part"] = part;
+      }
+      cases.push_back(c);
+    }
+  return {{"normalized_force", kFig12NormalizedForce},
+          {"indenter_radius_mm", p.geometry.indenter_radius_mm},
+          {"cases", cases}};
+}
+
+json fig12b(const Problem& base) {
+  json series = json::array();
+  SolverOptions options;
+  options.record_fields = false;
+  for (const auto equation : kEquations)
+    for (const double ratio : kFig12bRadiusRatio) {
+      Problem p = base;
+      p.geometry.indenter_radius_mm = ratio * base.geometry.clamp_radius_mm;
+      p.part_two_equation = equation;
+      const double force = kFig12NormalizedForce * force_scale_n(p);
+      json friction = json::array(), stretch = json::array(), configuration = json::array();
+      for (int k = 0; k <= kFig12bSteps; ++k) {
+        p.friction = kFig12bMaxFriction * k / kFig12bSteps;
+        const auto e = solve_at_force(p, force, Stage::Slip, options);
+        friction.push_back(p.friction);
+        stretch.push_back(e.ok() ? number(e.part_three_stretch) : json(nullptr));
+        configuration.push_back(e.ok() ? configuration_token(e.configuration) : "failed");
+      }
+      series.push_back({{"indenter_radius_mm", p.geometry.indenter_radius_mm},
+                        {"radius_ratio", ratio},
+                        {"part_two_equation", to_string(equation)},
+                        {"friction", friction},
+                        {"part_three_stretch", stretch},
+                        {"configuration", configuration}});
+    }
+  return {{"normalized_force", kFig12NormalizedForce}, {"series", series}};
+}
+
+json curve_json(const Problem& p, int points) {
+  CurveOptions options;
+  options.points = points;
+  const auto c = loading_curve(p, options);
+  json out = {{"part_two_equation", to_string(p.part_two_equation)}};
+  if (!c.ok()) {
+    out["failure"] = failure(c.status, c.message);
+    return out;
+  }
+  json depth = json::array(), force = json::array(), configuration = json::array();
+  for (const auto& q : c.points) {
+    depth.push_back(number(q.depth_mm));
+    force.push_back(number(q.force_n));
+    configuration.push_back(configuration_token(q.configuration));
+  }
+  out["depth_mm"] = depth;
+  out["force_n"] = force;
+  out["configuration"] = configuration;
+  if (c.puncture.found)
+    out["puncture"] = {{"depth_mm", number(c.puncture.depth_mm)},
+                       {"force_n", number(c.puncture.force_n)},
+                       {"part_three_stretch", number(c.puncture.part_three_stretch)},
+                       {"crack_location", c.puncture.crack_location}};
+  else
+    out["puncture"] = nullptr;
+  return out;
+}
+
+json fig13(const Problem& base, int points) {
+  json panels = json::array();
+  for (const auto& panel : kFig13) {
+    Problem p = base;
+    p.geometry.indenter_radius_mm = panel.indenter_radius_mm;
+    p.friction = panel.friction;
+    json curves = json::array();
+    for (const auto equation : kEquations) {
+      p.part_two_equation = equation;
+      curves.push_back(curve_json(p, points));
+    }
+    panels.push_back({{"label", panel.label},
+                      {"indenter_radius_mm", panel.indenter_radius_mm},
+                      {"friction", panel.friction},
+                      {"curves", curves}});
+  }
+  return {{"panels", panels}};
+}
+
+}  // namespace
+
+void add_figures_options(CLI::App& figures, FiguresFlags& f) {
+  figures.add_option("--out", f.out_dir, "Directory for the figures (created if missing)")
+      ->required()
+      ->type_name("DIR");
+}
+
+std::string figures_json(const Problem& base, const CurveFlags& curve) {
+  Progress progress("figures");
+  json out = {{"inputs", inputs_json(base)}};
+  progress.note("Fig. 11");
+  out["fig11"] = fig11(base);
+  progress.note("Fig. 12(a)");
+  out["fig12a"] = fig12a(base);
+  progress.note("Fig. 12(b)");
+  out["fig12b"] = fig12b(base);
+  progress.note("Fig. 13");
+  out["fig13"] = fig13(base, curve.points);
+  return out.dump(1) + "\n";
+}
+
+std::string run_figures(const Problem& base, const CurveFlags& curve, const FiguresFlags& f) {
+  check_plot_tools();
+  std::error_code ec;
+  std::filesystem::create_directories(f.out_dir, ec);
+  if (ec || !std::filesystem::is_directory(f.out_dir))
+    throw InputError(fmt::format("--out: cannot create the directory '{}': {}",
+                                 f.out_dir,
+                                 ec ? ec.message() : "not a directory"));
+  const auto data = figures_json(base, curve);
+  const auto data_path = (std::filesystem::path(f.out_dir) / "figures-data.json").string();
+  {
+    std::ofstream out(data_path, std::ios::binary);
+    out << data;
+    out.close();
+    if (!out) throw InputError(fmt::format("--out: cannot write '{}'", data_path));
+  }
+  run_plot_script("figures", data, f.out_dir);
+  return fmt::format("figure data: {}\n", data_path);
+}
+
+}  // namespace puncture::cli
