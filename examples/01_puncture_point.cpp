@@ -10,7 +10,9 @@ int main() {
     fmt::print("no puncture: {}\n", p.message);
     return 1;
   }
-  fmt::print("puncture at F = {:.4f} N, depth {:.2f} mm, Part III stretch {:.3f}\n", p.force_n,
-             p.depth_mm, p.part_three_stretch);
+  fmt::print("puncture at F = {:.4f} N, depth {:.2f} mm, Part III stretch {:.3f}\n",
+             p.force_n,
+             p.depth_mm,
+             p.part_three_stretch);
   fmt::print("crack starts in {}\n", p.crack_location);
 }

@@ -12,11 +12,16 @@ int main() {
     return 1;
   }
   fmt::print("configuration: {}\n", puncture::to_string(e.configuration));
-  fmt::print("depth {:.3f} mm, Part III stretch {:.3f}, Part II length {:.3f} mm\n", e.depth_mm,
-             e.part_three_stretch, e.part_two_length_mm);
+  fmt::print("depth {:.3f} mm, Part III stretch {:.3f}, Part II length {:.3f} mm\n",
+             e.depth_mm,
+             e.part_three_stretch,
+             e.part_two_length_mm);
   const auto& m = e.fields;
   for (std::size_t i = 0; i < m.size(); i += m.size() / 8)
     fmt::print("  part {}  R = {:7.3f} mm  r = {:7.3f} mm  z = {:7.3f} mm  I1 = {:6.2f}\n",
-               m.part[i], m.reference_radius_mm[i], m.radius_mm[i], m.deflection_mm[i],
+               m.part[i],
+               m.reference_radius_mm[i],
+               m.radius_mm[i],
+               m.deflection_mm[i],
                m.first_invariant[i]);
 }

@@ -13,7 +13,10 @@ int main() {
       fmt::print("mu' = {}: {}\n", mu, p.message);
       return 1;
     }
-    fmt::print("mu' = {:4.2f}  F_p = {:.4f} N  depth {:6.2f} mm  Part III stretch {:.3f}\n", mu,
-               p.force_n, p.depth_mm, p.part_three_stretch);
+    fmt::print("mu' = {:4.2f}  F_p = {:.4f} N  depth {:6.2f} mm  Part III stretch {:.3f}\n",
+               mu,
+               p.force_n,
+               p.depth_mm,
+               p.part_three_stretch);
   }
 }

@@ -9,10 +9,14 @@ namespace puncture {
 
 std::string to_string(Configuration c) {
   switch (c) {
-    case Configuration::Unloaded: return "unloaded";
-    case Configuration::Stick: return "stick";
-    case Configuration::SlipWithoutPartTwo: return "slip without Part II";
-    case Configuration::SlipWithPartTwo: return "slip with Part II";
+    case Configuration::Unloaded:
+      return "unloaded";
+    case Configuration::Stick:
+      return "stick";
+    case Configuration::SlipWithoutPartTwo:
+      return "slip without Part II";
+    case Configuration::SlipWithPartTwo:
+      return "slip with Part II";
   }
   return "?";
 }
@@ -21,11 +25,16 @@ std::string to_string(Stage stage) { return stage == Stage::Stick ? "stick" : "s
 
 std::string to_string(Status s) {
   switch (s) {
-    case Status::Converged: return "converged";
-    case Status::NoConvergence: return "no convergence";
-    case Status::BeyondLocking: return "beyond locking";
-    case Status::StickWrapsSide: return "stick wraps side";
-    case Status::InvalidInput: return "invalid input";
+    case Status::Converged:
+      return "converged";
+    case Status::NoConvergence:
+      return "no convergence";
+    case Status::BeyondLocking:
+      return "beyond locking";
+    case Status::StickWrapsSide:
+      return "stick wraps side";
+    case Status::InvalidInput:
+      return "invalid input";
   }
   return "?";
 }
@@ -76,8 +85,12 @@ ScaledSolution solve_scaled_at_depth(const Problem& problem, double d, Stage sta
     return sol.depth - d;
   };
   const double step = f_guess > 0.0 ? 0.5 * f_guess : 0.1;
-  const auto f = shoot_increasing(residual, 0.0, -d, std::numeric_limits<double>::infinity(),
-                                  options.max_shooting_iterations, step);
+  const auto f = shoot_increasing(residual,
+                                  0.0,
+                                  -d,
+                                  std::numeric_limits<double>::infinity(),
+                                  options.max_shooting_iterations,
+                                  step);
   if (!f) {
     if (last_failure.status == Status::Converged) last_failure.status = Status::NoConvergence;
     if (last_failure.message.empty())
@@ -138,25 +151,55 @@ MembraneFields fields_of(const Problem& p, const ScaledSolution& sol) {
   constexpr int kPartThreePoints = 5;
   for (int i = 0; i < kPartThreePoints; ++i) {
     const double r_ref = sol.r_corner * i / (kPartThreePoints - 1);
-    push_point(m, 3, r_ref * big_a, l3 * r_ref * big_a, depth, 0.0, l3, l3,
-               membrane_stress(p.material.law, l3, l3), g, 0.0, 0.0);
+    push_point(m,
+               3,
+               r_ref * big_a,
+               l3 * r_ref * big_a,
+               depth,
+               0.0,
+               l3,
+               l3,
+               membrane_stress(p.material.law, l3, l3),
+               g,
+               0.0,
+               0.0);
   }
   // Part II, from the corner up the side (samples were taken downward).
   for (auto it = sol.part_two.rbegin(); it != sol.part_two.rend(); ++it) {
     const double r_ref = (*it)[0], l1 = (*it)[1], l2 = a / r_ref;
     const auto st = membrane_stress(p.material.law, l1, l2);
-    const double pressure = st.s2 * g * p.geometry.thickness_mm /
-                            (l1 * p.geometry.indenter_radius_mm);  // Eq. (16)
+    const double pressure =
+        st.s2 * g * p.geometry.thickness_mm / (l1 * p.geometry.indenter_radius_mm);  // Eq. (16)
     const double z = depth - (sol.part_two_length - (*it)[2]) * big_a;
-    push_point(m, 2, r_ref * big_a, p.geometry.indenter_radius_mm, z, detail::kHalfPi, l1, l2, st,
-               g, pressure, p.friction * pressure);
+    push_point(m,
+               2,
+               r_ref * big_a,
+               p.geometry.indenter_radius_mm,
+               z,
+               detail::kHalfPi,
+               l1,
+               l2,
+               st,
+               g,
+               pressure,
+               p.friction * pressure);
   }
   // Part I, from the indenter to the clamp.
   for (const auto& s : sol.part_one) {
     const double r_ref = s[0], t = s[1], l1 = s[2], l2 = s[3], h = s[4];
     const double z = depth - (sol.part_two_length + h) * big_a;
-    push_point(m, 1, r_ref * big_a, l2 * r_ref * big_a, z, std::atan2(sol.f, t), l1, l2,
-               membrane_stress(p.material.law, l1, l2), g, 0.0, 0.0);
+    push_point(m,
+               1,
+               r_ref * big_a,
+               l2 * r_ref * big_a,
+               z,
+               std::atan2(sol.f, t),
+               l1,
+               l2,
+               membrane_stress(p.material.law, l1, l2),
+               g,
+               0.0,
+               0.0);
   }
   return m;
 }
@@ -207,22 +250,24 @@ Equilibrium invalid(std::string message) {
 
 Equilibrium solve_at_force(const Problem& problem, double force_n, Stage stage,
                            const SolverOptions& options) {
-  if (const auto errors = validation_errors(problem); !errors.empty()) return invalid(errors.front());
+  if (const auto errors = validation_errors(problem); !errors.empty())
+    return invalid(errors.front());
   if (!std::isfinite(force_n) || force_n < 0.0)
     return invalid("force must be a finite number >= 0 N, got " + std::to_string(force_n));
   const double f = force_n / force_scale_n(problem);
-  return detail::to_physical(problem, detail::solve_scaled(problem, f, stage, options), stage,
-                             options);
+  return detail::to_physical(
+      problem, detail::solve_scaled(problem, f, stage, options), stage, options);
 }
 
 Equilibrium solve_at_depth(const Problem& problem, double depth_mm, Stage stage,
                            const SolverOptions& options) {
-  if (const auto errors = validation_errors(problem); !errors.empty()) return invalid(errors.front());
+  if (const auto errors = validation_errors(problem); !errors.empty())
+    return invalid(errors.front());
   if (!std::isfinite(depth_mm) || depth_mm < 0.0)
     return invalid("depth must be a finite number >= 0 mm, got " + std::to_string(depth_mm));
   const double d = depth_mm / problem.geometry.clamp_radius_mm;
-  return detail::to_physical(problem, detail::solve_scaled_at_depth(problem, d, stage, options),
-                             stage, options);
+  return detail::to_physical(
+      problem, detail::solve_scaled_at_depth(problem, d, stage, options), stage, options);
 }
 
 }  // namespace puncture

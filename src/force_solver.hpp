@@ -31,23 +31,23 @@ struct ScaledSolution {
   Status status = Status::NoConvergence;
   std::string message;
   Configuration configuration = Configuration::Unloaded;
-  double f = 0.0;                // F / (2 pi G H A)
-  double parameter = 0.0;        // the configuration's shooting parameter (see ForceSolver)
+  double f = 0.0;          // F / (2 pi G H A)
+  double parameter = 0.0;  // the configuration's shooting parameter (see ForceSolver)
   double part_three_stretch = 1.0;
   double r_corner = 0.0;         // reference radius of the material at the corner
   double r_top = 0.0;            // reference radius where Part I starts
   double part_two_length = 0.0;  // current length of Part II
   double depth = 0.0;
   double corner_slope = 0.0;
-  double tension_ratio = 1.0;    // s1 outside the corner / s1 in Part III
-  double edge_s1 = 0.0;          // s1 at the inner end of Part I
-  double max_i1 = 3.0;           // largest I1 in Parts I and II
-  double max_i1_r = 0.0;         // ... at this reference radius
-  double max_i1_radius = 0.0;    // ... and this current radius
-  double residual = 0.0;         // lambda2(A) - 1
+  double tension_ratio = 1.0;  // s1 outside the corner / s1 in Part III
+  double edge_s1 = 0.0;        // s1 at the inner end of Part I
+  double max_i1 = 3.0;         // largest I1 in Parts I and II
+  double max_i1_r = 0.0;       // ... at this reference radius
+  double max_i1_radius = 0.0;  // ... and this current radius
+  double residual = 0.0;       // lambda2(A) - 1
   int evaluations = 0;
-  bool integrated = false;       // every part was integrated (residual and depth are defined)
-  double shooting_tol = 0.0;     // the clamp tolerance it was judged against
+  bool integrated = false;    // every part was integrated (residual and depth are defined)
+  double shooting_tol = 0.0;  // the clamp tolerance it was judged against
   std::vector<PartOneSample> part_one;
   std::vector<PartTwoSample> part_two;
   bool ok() const { return status == Status::Converged; }

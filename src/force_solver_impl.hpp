@@ -34,7 +34,11 @@ inline double corner_slope(double kappa, double mu) {
         const double e = std::exp(mu * phi);
         return std::make_pair(std::sin(phi) * e - kappa, (std::cos(phi) + mu * std::sin(phi)) * e);
       },
-      0.5 * std::asin(std::min(kappa, 1.0)), 0.0, kHalfPi, 52, iterations);
+      0.5 * std::asin(std::min(kappa, 1.0)),
+      0.0,
+      kHalfPi,
+      52,
+      iterations);
 }
 
 // After a bracketing shooting whose bracket has shrunk to adjacent floating-point numbers, the
@@ -95,7 +99,7 @@ typename ForceSolver<Law>::PartOneRun ForceSolver<Law>::run_part_one(
 
 template <class Law>
 std::optional<typename ForceSolver<Law>::Start> ForceSolver<Law>::start(Configuration c, double f,
-                                                                       double p) const {
+                                                                        double p) const {
   if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
   switch (c) {
     case Configuration::Stick: {
@@ -105,8 +109,8 @@ std::optional<typename ForceSolver<Law>::Start> ForceSolver<Law>::start(Configur
       // inversion loses digits to cancellation, hence the loose bound).
       if (!(rs1 >= f * (1.0 - 1e-8)) || first_invariant(p, 1.0) >= max_i1_) return std::nullopt;
       const double t = std::sqrt(std::max(0.0, (rs1 - f) * (rs1 + f)));
-      return Start{{t, p, 1.0, 0.0}, s_.a, std::atan2(f, t),
-                   std::numeric_limits<double>::infinity()};
+      return Start{
+          {t, p, 1.0, 0.0}, s_.a, std::atan2(f, t), std::numeric_limits<double>::infinity()};
     }
     case Configuration::SlipWithoutPartTwo: {
       // Part III stretch p: the corner material sits at R = a / p; the capstan law and the
@@ -131,7 +135,8 @@ std::optional<typename ForceSolver<Law>::Start> ForceSolver<Law>::start(Configur
       if (!l1) return std::nullopt;
       return Start{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPi, std::exp(s_.mu * kHalfPi)};
     }
-    case Configuration::Unloaded: break;
+    case Configuration::Unloaded:
+      break;
   }
   return std::nullopt;
 }
@@ -198,18 +203,23 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
     const double r_floor = s_.a / locking_radial_stretch(law_, 1.0);
     IntegrationSettings integration = s_.integration;
     if (record) integration.max_step = st->r0 / std::max(1, s_.field_points);
-    const bool ok = integrate_part(side, y, st->r0, std::isfinite(r_floor) ? r_floor : 1e-6 * s_.a,
-                                   integration, [&](double r, const PartTwoState& state) {
-                                     if (corner_gap(r, state) <= 0.0) {
-                                       r_hit = r;
-                                       return false;
-                                     }
-                                     r_prev = r;
-                                     y_prev = state;
-                                     if (record) sol.part_two.push_back({r, state[0], state[1]});
-                                     side_max.observe(r, state, first_invariant(state[0], s_.a / r));
-                                     return true;
-                                   });
+    const bool ok =
+        integrate_part(side,
+                       y,
+                       st->r0,
+                       std::isfinite(r_floor) ? r_floor : 1e-6 * s_.a,
+                       integration,
+                       [&](double r, const PartTwoState& state) {
+                         if (corner_gap(r, state) <= 0.0) {
+                           r_hit = r;
+                           return false;
+                         }
+                         r_prev = r;
+                         y_prev = state;
+                         if (record) sol.part_two.push_back({r, state[0], state[1]});
+                         side_max.observe(r, state, first_invariant(state[0], s_.a / r));
+                         return true;
+                       });
     if (!ok || r_hit < 0.0) {
       sol.status = Status::BeyondLocking;
       sol.message = std::isfinite(max_i1_)
@@ -285,7 +295,8 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
   }
   sol.integrated = true;
   sol.shooting_tol = s_.shooting_tol;
-  sol.status = std::abs(sol.residual) <= s_.shooting_tol ? Status::Converged : Status::NoConvergence;
+  sol.status =
+      std::abs(sol.residual) <= s_.shooting_tol ? Status::Converged : Status::NoConvergence;
   if (!sol.ok())
     sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);
   return sol;
@@ -323,9 +334,8 @@ std::optional<ScaledSolution> ForceSolver<Law>::part_two_onset() const {
   const double f_probe = 1e-4;
   const auto g0 = indicator(f_probe);
   if (!g0 || *g0 >= 0.0) return std::nullopt;
-  const auto f_on = shoot_increasing(indicator, f_probe, *g0,
-                                     std::numeric_limits<double>::infinity(), s_.max_iterations,
-                                     0.05);
+  const auto f_on = shoot_increasing(
+      indicator, f_probe, *g0, std::numeric_limits<double>::infinity(), s_.max_iterations, 0.05);
   if (!f_on) return std::nullopt;
   const auto onset = part_two_onset_stretch(*f_on);
   if (!onset) return std::nullopt;
@@ -365,16 +375,16 @@ std::optional<ScaledSolution> ForceSolver<Law>::puncture_at_corner(double i1c) c
     auto q = [&](double r, const PartTwoState& state) {
       return r * membrane_stress(law_, state[0], s_.a / r).s1 - f;
     };
-    const bool ok = integrate_part(side, y, r_corner, 1.0, s_.integration,
-                                   [&](double r, const PartTwoState& state) {
-                                     if (q(r, state) >= 0.0) {
-                                       r_top = r;
-                                       return false;
-                                     }
-                                     r_prev = r;
-                                     y_prev = state;
-                                     return true;
-                                   });
+    const bool ok = integrate_part(
+        side, y, r_corner, 1.0, s_.integration, [&](double r, const PartTwoState& state) {
+          if (q(r, state) >= 0.0) {
+            r_top = r;
+            return false;
+          }
+          r_prev = r;
+          y_prev = state;
+          return true;
+        });
     if (!ok || r_top < 0.0 || r_top == r_corner) return std::nullopt;
     // Inside the last step, re-integrated adaptively from its start; a trial that cannot be
     // integrated (locking) counts as past the top.
@@ -405,8 +415,8 @@ std::optional<ScaledSolution> ForceSolver<Law>::puncture_at_corner(double i1c) c
   const double f_lo = q_corner * (1.0 + 1e-9);
   const auto g_lo = g(f_lo);
   if (!g_lo || *g_lo >= 0.0) return std::nullopt;
-  const auto f = shoot_increasing(g, f_lo, *g_lo, std::numeric_limits<double>::infinity(),
-                                  s_.max_iterations, 0.25 * f_lo);
+  const auto f = shoot_increasing(
+      g, f_lo, *g_lo, std::numeric_limits<double>::infinity(), s_.max_iterations, 0.25 * f_lo);
   if (!f) return std::nullopt;
   const auto top = top_stretch(*f);
   if (!top) return std::nullopt;
@@ -491,8 +501,8 @@ ScaledSolution ForceSolver<Law>::slip(double f) const {
     // Part I reaches the clamp with lambda2 < 1 even when it leaves the corner vertically, so a
     // larger Part III stretch (and a flatter exit) is needed: no Part II.
     c = Configuration::SlipWithoutPartTwo;
-    root = shoot_increasing(without_two, *onset, g_onset, locking_radial_stretch(law_, 1.0),
-                            s_.max_iterations);
+    root = shoot_increasing(
+        without_two, *onset, g_onset, locking_radial_stretch(law_, 1.0), s_.max_iterations);
   } else {
     // Part II exists: shoot on lambda2 where Part I leaves the side (between 1 and the onset).
     c = Configuration::SlipWithPartTwo;

@@ -27,8 +27,8 @@ template <class State, class System, class Observer>
 bool integrate_part(const System& system, State& x, double r_begin, double r_end,
                     const IntegrationSettings& settings, Observer&& observe) {
   namespace odeint = boost::numeric::odeint;
-  auto stepper = odeint::make_controlled(settings.abs_tol, settings.rel_tol,
-                                         IntegrationStepper<State>());
+  auto stepper =
+      odeint::make_controlled(settings.abs_tol, settings.rel_tol, IntegrationStepper<State>());
   const double span = r_end - r_begin;
   const double direction = span > 0.0 ? 1.0 : -1.0;
   double r = r_begin;
@@ -60,7 +60,8 @@ template <class State, class System>
 std::optional<State> advance(const System& system, State x, double r_begin, double r_end,
                              const IntegrationSettings& settings) {
   if (r_end == r_begin) return x;
-  if (!integrate_part(system, x, r_begin, r_end, settings, [](double, const State&) { return true; }))
+  if (!integrate_part(
+          system, x, r_begin, r_end, settings, [](double, const State&) { return true; }))
     return std::nullopt;
   return x;
 }

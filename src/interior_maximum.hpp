@@ -48,7 +48,8 @@ class InteriorMaximum {
       std::uintmax_t iterations = 60;
       const auto found = boost::math::tools::brent_find_minima(
           [&](double r) { return -value(r, step(r0, x0, r)); }, lo, hi, 40, iterations);
-      if (-found.second > best.value) best = {-found.second, found.first, step(r0, x0, found.first)};
+      if (-found.second > best.value)
+        best = {-found.second, found.first, step(r0, x0, found.first)};
     };
     search(before_r_, before_state_, best_r_);
     search(best_r_, best_state_, after_r_);
@@ -56,7 +57,6 @@ class InteriorMaximum {
   }
 
   Maximum sampled() const { return {best_value_, best_r_, best_state_}; }
-
 
  private:
   double best_value_ = -std::numeric_limits<double>::infinity();

@@ -34,7 +34,11 @@ std::optional<double> invert_radial_stress(const Law& law, double s1, double l2,
         const auto st = membrane_stress(law, l1, l2);
         return std::make_pair(st.s1 - s1, st.ds1_dl1);
       },
-      start, lo, hi, 50, max_iter);
+      start,
+      lo,
+      hi,
+      50,
+      max_iter);
   if (!std::isfinite(x)) return std::nullopt;
   return x;
 }

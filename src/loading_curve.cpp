@@ -31,8 +31,8 @@ std::optional<double> first_force_where(const Problem& p, Stage stage, double f_
     if (!sol.ok()) return std::nullopt;
     return g(sol);
   };
-  return detail::shoot_increasing(residual, f_lo, g_lo, kInf, o.max_shooting_iterations,
-                                  std::max(0.25 * f_lo, 0.05));
+  return detail::shoot_increasing(
+      residual, f_lo, g_lo, kInf, o.max_shooting_iterations, std::max(0.25 * f_lo, 0.05));
 }
 
 std::string crack_location(const detail::ScaledSolution& sol) {
@@ -78,9 +78,12 @@ StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options
   } else if (p.stick.rule == StickRule::Depth) {
     at_switch = detail::solve_scaled_at_depth(p, p.stick.threshold / big_a, Stage::Stick, o);
   } else {  // EdgeTension: s1 H at the edge [N/mm] reaches the threshold
-    const double target = p.stick.threshold / (p.material.shear_modulus_mpa * p.geometry.thickness_mm);
-    const auto f = first_force_where(p, Stage::Stick, 0.0, -target, o,
-                                     [&](const detail::ScaledSolution& s) { return s.edge_s1 - target; });
+    const double target =
+        p.stick.threshold / (p.material.shear_modulus_mpa * p.geometry.thickness_mm);
+    const auto f =
+        first_force_where(p, Stage::Stick, 0.0, -target, o, [&](const detail::ScaledSolution& s) {
+          return s.edge_s1 - target;
+        });
     if (f) at_switch = detail::solve_scaled(p, *f, Stage::Stick, o);
   }
   if (!at_switch || !at_switch->ok()) {
@@ -195,8 +198,7 @@ struct Predictor {
     for (std::size_t i = n - m; i < n; ++i) {
       double w = 1.0;
       for (std::size_t j = n - m; j < n; ++j)
-        if (j != i)
-          w *= std::log(d / history[j][0]) / std::log(history[i][0] / history[j][0]);
+        if (j != i) w *= std::log(d / history[j][0]) / std::log(history[i][0] / history[j][0]);
       out[0] += w * std::log(history[i][1]);
       out[1] += w * std::log(history[i][2] - floor);
     }
@@ -268,8 +270,8 @@ bool follow_curve(const Problem& p, const Law& law, const detail::ScaledSettings
     }
     if (!sol->ok()) {
       out.status = sol->status;
-      out.message = fmt::format("at depth {:.6g} mm ({} stage): {}", depth, to_string(stage),
-                                sol->message);
+      out.message =
+          fmt::format("at depth {:.6g} mm ({} stage): {}", depth, to_string(stage), sol->message);
       return false;
     }
     if (sol->configuration != Configuration::Unloaded)
@@ -364,8 +366,8 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
   const detail::ScaledSettings settings = detail::scaled_settings(p, o);
   const bool ok = std::visit(
       [&](const auto& law) {
-        return follow_curve(p, law, settings, o, boundary, end_depth, has_switch, onset, curve,
-                            out);
+        return follow_curve(
+            p, law, settings, o, boundary, end_depth, has_switch, onset, curve, out);
       },
       p.material.law);
   if (!ok) return out;

@@ -15,11 +15,13 @@ std::string describe(const Material& material) {
       [](const auto& l) -> std::string {
         using L = std::decay_t<decltype(l)>;
         if constexpr (std::is_same_v<L, Gent>) return fmt::format(" (J_lim = {:g})", l.j_lim);
-        if constexpr (std::is_same_v<L, MooneyRivlin>) return fmt::format(" (alpha = {:g})", l.alpha);
+        if constexpr (std::is_same_v<L, MooneyRivlin>)
+          return fmt::format(" (alpha = {:g})", l.alpha);
         return "";
       },
       material.law);
-  return fmt::format("{}{}, G = {:g} MPa", law_name(material.law), params, material.shear_modulus_mpa);
+  return fmt::format(
+      "{}{}, G = {:g} MPa", law_name(material.law), params, material.shear_modulus_mpa);
 }
 
 double max_first_invariant(const MaterialLaw& law) {
@@ -34,7 +36,9 @@ std::optional<double> radial_stretch_for_stress(const MaterialLaw& law, double s
   return std::visit([&](const auto& l) { return detail::invert_radial_stress(l, s1, l2); }, law);
 }
 
-double equibiaxial_stress(const MaterialLaw& law, double l) { return membrane_stress(law, l, l).s1; }
+double equibiaxial_stress(const MaterialLaw& law, double l) {
+  return membrane_stress(law, l, l).s1;
+}
 
 double uniaxial_stress(const MaterialLaw& law, double l) {
   return membrane_stress(law, l, 1.0 / std::sqrt(l)).s1;

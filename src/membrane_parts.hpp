@@ -29,7 +29,7 @@ struct PartOneSystem {
     if (!(st.i1 < max_i1) || !std::isfinite(st.ds1_dl1)) throw IntegrationFailure{};
     const double s_total = std::sqrt(t * t + f * f);
     const double cos_phi = t / s_total, sin_phi = f / s_total;
-    const double dl2 = (l1 * cos_phi - l2) / r_ref;                       // Eq. (11)
+    const double dl2 = (l1 * cos_phi - l2) / r_ref;  // Eq. (11)
     // d(R s1)/dR = dS/dR = cos(phi) s2 (Eq. 13 with Eq. 12), solved for dlambda1/dR.
     const double dl1 = (cos_phi * st.s2 - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
     dx[0] = st.s2;  // Eq. (13): d(R s1 cos phi)/dR = s2
@@ -58,9 +58,8 @@ struct PartTwoSystem {
     if (!(st.i1 < max_i1) || !std::isfinite(st.ds1_dl1)) throw IntegrationFailure{};
     const double dl2 = -l2 / r_ref;
     // Ring balance: d(R s1)/dR = mu s2.  Paper Eq. (18): ds1/dR = mu lambda2 s2 / a = mu s2 / R.
-    const double ds1 = equation == PartTwoEquation::RingBalance
-                           ? (mu * st.s2 - st.s1) / r_ref
-                           : mu * st.s2 / r_ref;
+    const double ds1 = equation == PartTwoEquation::RingBalance ? (mu * st.s2 - st.s1) / r_ref
+                                                                : mu * st.s2 / r_ref;
     dx[0] = (ds1 - st.ds1_dl2 * dl2) / st.ds1_dl1;
     dx[1] = -l1;  // Eq. (14): dz/dR = lambda1, and y grows downward
   }

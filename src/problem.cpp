@@ -27,9 +27,10 @@ std::vector<std::string> validation_errors(const Problem& p) {
   if (std::isfinite(g.indenter_radius_mm) && std::isfinite(g.clamp_radius_mm) &&
       g.indenter_radius_mm > 0.0 && g.clamp_radius_mm > 0.0 &&
       g.indenter_radius_mm >= g.clamp_radius_mm)
-    errors.push_back(fmt::format(
-        "indenter radius must be smaller than the clamp radius ({} mm), got {} mm",
-        g.clamp_radius_mm, g.indenter_radius_mm));
+    errors.push_back(
+        fmt::format("indenter radius must be smaller than the clamp radius ({} mm), got {} mm",
+                    g.clamp_radius_mm,
+                    g.indenter_radius_mm));
   require_positive(errors, "shear modulus", p.material.shear_modulus_mpa, "MPa");
   if (const auto* gent = std::get_if<Gent>(&p.material.law)) {
     if (!std::isfinite(gent->j_lim) || gent->j_lim <= 0.0)
@@ -37,12 +38,12 @@ std::vector<std::string> validation_errors(const Problem& p) {
   }
   if (const auto* mr = std::get_if<MooneyRivlin>(&p.material.law)) {
     if (!std::isfinite(mr->alpha) || mr->alpha < 0.0 || mr->alpha >= 1.0)
-      errors.push_back(fmt::format("Mooney-Rivlin alpha = C2/(C1+C2) must be in [0, 1), got {}",
-                                   mr->alpha));
+      errors.push_back(
+          fmt::format("Mooney-Rivlin alpha = C2/(C1+C2) must be in [0, 1), got {}", mr->alpha));
   }
   if (!std::isfinite(p.friction) || p.friction < 0.0)
-    errors.push_back(fmt::format("friction coefficient must be a finite number >= 0, got {}",
-                                 p.friction));
+    errors.push_back(
+        fmt::format("friction coefficient must be a finite number >= 0, got {}", p.friction));
   else if (p.friction > 10.0)
     errors.push_back(fmt::format(
         "friction coefficient must be <= 10 (beyond, the sliding under the tip is below double "
@@ -52,19 +53,22 @@ std::vector<std::string> validation_errors(const Problem& p) {
   if (!std::isfinite(p.critical_i1) || p.critical_i1 <= 3.0)
     errors.push_back(fmt::format("critical I1 must be a finite number > 3, got {}", p.critical_i1));
   else if (p.critical_i1 >= i1_max)
-    errors.push_back(fmt::format(
-        "critical I1 must be below the Gent locking limit 3 + J_lim = {:g}, got {:g}", i1_max,
-        p.critical_i1));
+    errors.push_back(
+        fmt::format("critical I1 must be below the Gent locking limit 3 + J_lim = {:g}, got {:g}",
+                    i1_max,
+                    p.critical_i1));
   const auto& s = p.stick;
-  if (s.rule == StickRule::Force || s.rule == StickRule::Depth || s.rule == StickRule::EdgeTension) {
+  if (s.rule == StickRule::Force || s.rule == StickRule::Depth ||
+      s.rule == StickRule::EdgeTension) {
     if (!std::isfinite(s.threshold) || s.threshold <= 0.0)
-      errors.push_back(fmt::format("stick threshold for rule '{}' must be a finite number > 0 {}, "
-                                   "got {}",
-                                   to_string(s.rule),
-                                   s.rule == StickRule::Force   ? "N"
-                                   : s.rule == StickRule::Depth ? "mm"
-                                                                : "N/mm",
-                                   s.threshold));
+      errors.push_back(
+          fmt::format("stick threshold for rule '{}' must be a finite number > 0 {}, "
+                      "got {}",
+                      to_string(s.rule),
+                      s.rule == StickRule::Force   ? "N"
+                      : s.rule == StickRule::Depth ? "mm"
+                                                   : "N/mm",
+                      s.threshold));
   }
   return errors;
 }
@@ -84,11 +88,16 @@ double force_scale_n(const Problem& p) {
 
 std::string to_string(StickRule rule) {
   switch (rule) {
-    case StickRule::None: return "none";
-    case StickRule::Force: return "force";
-    case StickRule::Depth: return "depth";
-    case StickRule::EdgeTension: return "edge-tension";
-    case StickRule::Always: return "always";
+    case StickRule::None:
+      return "none";
+    case StickRule::Force:
+      return "force";
+    case StickRule::Depth:
+      return "depth";
+    case StickRule::EdgeTension:
+      return "edge-tension";
+    case StickRule::Always:
+      return "always";
   }
   return "?";
 }

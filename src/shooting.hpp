@@ -40,9 +40,14 @@ std::optional<double> shoot_increasing(Residual&& g, double lo, double g_lo, dou
   const auto tolerance = [](double x0, double x1) {
     return std::abs(x1 - x0) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(x1);
   };
-  const auto bracket = boost::math::tools::toms748_solve(
-      [&](double p) { return residual_or_beyond(g, p); }, lo, hi, g_lo, g_hi, tolerance,
-      iterations);
+  const auto bracket =
+      boost::math::tools::toms748_solve([&](double p) { return residual_or_beyond(g, p); },
+                                        lo,
+                                        hi,
+                                        g_lo,
+                                        g_hi,
+                                        tolerance,
+                                        iterations);
   if (iterations >= static_cast<std::uintmax_t>(max_iterations)) return std::nullopt;
   return 0.5 * (bracket.first + bracket.second);
 }

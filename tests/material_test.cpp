@@ -1,10 +1,10 @@
 // Material laws: stresses against finite differences of W, the Jacobian against finite
 // differences of the stresses, closed forms, and the inverse lambda1(s1, lambda2).
+#include "puncture/material.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "puncture/material.hpp"
 
 namespace puncture {
 namespace {

@@ -19,10 +19,10 @@ enum class Stage { Stick, Slip };
 
 enum class Status {
   Converged,
-  NoConvergence,    // the shooting did not reach the clamp condition; message says where
-  BeyondLocking,    // the load needs stretches beyond the material's locking limit
-  StickWrapsSide,   // a held membrane would wrap the indenter's side: outside the stick model
-  InvalidInput,     // the problem or the requested load is invalid; message names it
+  NoConvergence,   // the shooting did not reach the clamp condition; message says where
+  BeyondLocking,   // the load needs stretches beyond the material's locking limit
+  StickWrapsSide,  // a held membrane would wrap the indenter's side: outside the stick model
+  InvalidInput,    // the problem or the requested load is invalid; message names it
 };
 
 std::string to_string(Configuration configuration);
@@ -31,20 +31,20 @@ std::string to_string(Status status);
 
 // Fields along the meridian from the centre (R = 0) to the clamp (R = A), in physical units.
 struct MembraneFields {
-  std::vector<int> part;                         // 1 free, 2 on the indenter's side, 3 under the tip
-  std::vector<double> reference_radius_mm;       // R, position in the flat reference state
-  std::vector<double> radius_mm;                 // r, current distance from the axis
-  std::vector<double> deflection_mm;             // z, current axial displacement below the clamp
-                                                 // plane, in the indentation direction
-  std::vector<double> slope_rad;                 // phi, angle of the meridian to the clamp plane
-  std::vector<double> radial_stretch;            // lambda1 (meridional)
-  std::vector<double> hoop_stretch;              // lambda2 = r / R
-  std::vector<double> thickness_stretch;         // lambda3 = 1 / (lambda1 lambda2)
-  std::vector<double> radial_stress_mpa;         // s1, nominal (force per reference area)
-  std::vector<double> hoop_stress_mpa;           // s2, nominal
-  std::vector<double> first_invariant;           // I1 = lambda1^2 + lambda2^2 + lambda3^2
-  std::vector<double> contact_pressure_mpa;      // P_n in Part II (true, per current area), else 0
-  std::vector<double> friction_traction_mpa;     // mu P_n in Part II, else 0
+  std::vector<int> part;                      // 1 free, 2 on the indenter's side, 3 under the tip
+  std::vector<double> reference_radius_mm;    // R, position in the flat reference state
+  std::vector<double> radius_mm;              // r, current distance from the axis
+  std::vector<double> deflection_mm;          // z, current axial displacement below the clamp
+                                              // plane, in the indentation direction
+  std::vector<double> slope_rad;              // phi, angle of the meridian to the clamp plane
+  std::vector<double> radial_stretch;         // lambda1 (meridional)
+  std::vector<double> hoop_stretch;           // lambda2 = r / R
+  std::vector<double> thickness_stretch;      // lambda3 = 1 / (lambda1 lambda2)
+  std::vector<double> radial_stress_mpa;      // s1, nominal (force per reference area)
+  std::vector<double> hoop_stress_mpa;        // s2, nominal
+  std::vector<double> first_invariant;        // I1 = lambda1^2 + lambda2^2 + lambda3^2
+  std::vector<double> contact_pressure_mpa;   // P_n in Part II (true, per current area), else 0
+  std::vector<double> friction_traction_mpa;  // mu P_n in Part II, else 0
   std::size_t size() const { return part.size(); }
 };
 
@@ -58,16 +58,16 @@ struct Equilibrium {
   double normalized_force = 0.0;    // F / (2 pi G H A), the paper's normalisation
   double depth_mm = 0.0;            // indentation depth of the tip below the clamp plane [mm]
   double part_three_stretch = 1.0;  // homogeneous equibiaxial stretch under the tip
-  double corner_reference_radius_mm = 0.0;     // R of the material at the corner (Part III edge)
+  double corner_reference_radius_mm = 0.0;        // R of the material at the corner (Part III edge)
   double part_two_top_reference_radius_mm = 0.0;  // R at the Part II / Part I boundary
-  double part_two_length_mm = 0.0;  // current length of Part II along the side
-  double corner_slope_rad = 0.0;    // slope of Part I where it leaves the indenter
-  double corner_tension_ratio = 1.0;  // s1 just outside the corner / s1 in Part III
-  double max_first_invariant = 3.0;   // largest I1 in the membrane: where a crack starts
+  double part_two_length_mm = 0.0;                // current length of Part II along the side
+  double corner_slope_rad = 0.0;                  // slope of Part I where it leaves the indenter
+  double corner_tension_ratio = 1.0;              // s1 just outside the corner / s1 in Part III
+  double max_first_invariant = 3.0;  // largest I1 in the membrane: where a crack starts
   double max_first_invariant_reference_radius_mm = 0.0;  // where it is: reference radius R
   double max_first_invariant_radius_mm = 0.0;            // ... and current radius r
-  double clamp_residual = 0.0;      // |lambda2(A) - 1| reached by the shooting
-  int shooting_evaluations = 0;     // integrations of Part I used
+  double clamp_residual = 0.0;                           // |lambda2(A) - 1| reached by the shooting
+  int shooting_evaluations = 0;                          // integrations of Part I used
   MembraneFields fields;
 
   bool ok() const { return status == Status::Converged; }

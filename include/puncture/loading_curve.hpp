@@ -46,8 +46,8 @@ struct PuncturePrediction {
 };
 
 struct CurveOptions {
-  int points = 200;             // depth points from zero to puncture (or to max_depth_mm)
-  double max_depth_mm = 0.0;    // stop here instead of at puncture when > 0
+  int points = 200;           // depth points from zero to puncture (or to max_depth_mm)
+  double max_depth_mm = 0.0;  // stop here instead of at puncture when > 0
   std::function<void(int done, int total)> progress;  // called after each point, if set
 };
 
@@ -67,9 +67,9 @@ struct LoadingCurve {
 struct StageBoundary {
   Status status = Status::Converged;
   std::string message;
-  bool switches = false;       // false: the membrane stays in its first stage
+  bool switches = false;  // false: the membrane stays in its first stage
   Stage first_stage = Stage::Slip;
-  double depth_mm = 0.0;       // switch depth when it switches
+  double depth_mm = 0.0;  // switch depth when it switches
   double force_stuck_n = 0.0;
 };
 StageBoundary stick_slip_boundary(const Problem& problem, const SolverOptions& options = {});

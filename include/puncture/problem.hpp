@@ -40,9 +40,9 @@ enum class PartTwoEquation {
 struct Problem {
   Geometry geometry;
   Material material;
-  double friction = 0.18;        // Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)
-  double critical_i1 = 95.2;     // I1 at which the membrane punctures (inflation test, §2.3)
-  StickCriterion stick;          // stick -> slip switch rule
+  double friction = 0.18;     // Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)
+  double critical_i1 = 95.2;  // I1 at which the membrane punctures (inflation test, §2.3)
+  StickCriterion stick;       // stick -> slip switch rule
   PartTwoEquation part_two_equation = PartTwoEquation::RingBalance;
 };
 
