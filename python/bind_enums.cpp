@@ -4,24 +4,6 @@
 
 namespace puncture::python {
 
-namespace {
-
-std::string configuration_token(Configuration c) {
-  switch (c) {
-    case Configuration::Unloaded:
-      return "unloaded";
-    case Configuration::Stick:
-      return "stick";
-    case Configuration::SlipWithoutPartTwo:
-      return "slip_without_part_two";
-    case Configuration::SlipWithPartTwo:
-      return "slip_with_part_two";
-  }
-  return "unknown";
-}
-
-}  // namespace
-
 void bind_enums(py::module_& m) {
   py::enum_<Stage>(m, "Stage", "Loading stage: membrane held at the indenter's edge, or sliding")
       .value("Stick", Stage::Stick)
@@ -37,7 +19,7 @@ void bind_enums(py::module_& m) {
       .value("SlipWithPartTwo",
              Configuration::SlipWithPartTwo,
              "Part III, the corner wrapped, Part II on the indenter's side, then Part I")
-      .def_property_readonly("token", &configuration_token)
+      .def_property_readonly("token", [](Configuration c) { return to_token(c); })
       .def_property_readonly("description", [](Configuration c) { return to_string(c); });
 
   py::enum_<Status>(m, "Status", "Outcome of a solve")

@@ -21,6 +21,20 @@ std::string to_string(Configuration c) {
   return "?";
 }
 
+std::string to_token(Configuration c) {
+  switch (c) {
+    case Configuration::Unloaded:
+      return "unloaded";
+    case Configuration::Stick:
+      return "stick";
+    case Configuration::SlipWithoutPartTwo:
+      return "slip_without_part_two";
+    case Configuration::SlipWithPartTwo:
+      return "slip_with_part_two";
+  }
+  return "unknown";
+}
+
 std::string to_string(Stage stage) { return stage == Stage::Stick ? "stick" : "slip"; }
 
 std::string to_string(Status s) {

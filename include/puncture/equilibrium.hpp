@@ -26,6 +26,8 @@ enum class Status {
 };
 
 std::string to_string(Configuration configuration);
+// Machine-readable name, as written in CSV and JSON: "slip_with_part_two" and so on.
+std::string to_token(Configuration configuration);
 std::string to_string(Stage stage);
 std::string to_string(Status status);
 
