@@ -9,6 +9,7 @@
 #include "output_options.hpp"
 #include "puncture/calibration.hpp"
 #include "puncture/problem.hpp"
+#include "puncture/puncture_band.hpp"
 
 namespace puncture::cli {
 
@@ -42,9 +43,20 @@ struct UniaxialFitReport {
   UniaxialFit fit;  // converged
 };
 
+struct BandReport {
+  Problem problem;  // the nominal parameters
+  BandRanges ranges;
+  // The standard deviation each range came from (mean +- sd_multiple sd), when it did; in the
+  // order of BandParameter.
+  std::optional<double> sd[4];
+  double sd_multiple = 1.0;
+  PunctureBand band;
+};
+
 std::string calibration_text(const CriticalI1Report& report, Format format);
 std::string calibration_text(const FrictionReport& report, Format format);
 std::string calibration_text(const JLimReport& report, Format format);
 std::string calibration_text(const UniaxialFitReport& report, Format format);
+std::string calibration_text(const BandReport& report, Format format);
 
 }  // namespace puncture::cli

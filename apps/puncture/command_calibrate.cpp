@@ -1,4 +1,4 @@
-// `puncture calibrate critical-i1|friction|jlim` and `puncture fit uniaxial`.
+// `puncture calibrate critical-i1|friction|jlim|band` and `puncture fit uniaxial`.
 #include "command_calibrate.hpp"
 
 #include <fmt/format.h>
@@ -11,6 +11,7 @@
 #include "progress.hpp"
 #include "puncture/calibration.hpp"
 #include "puncture/csv.hpp"
+#include "puncture/puncture_band.hpp"
 
 namespace puncture::cli {
 
@@ -187,6 +188,148 @@ std::string run_jlim(const CLI::App& app, const ProblemFlags& pf, const Calibrat
   return calibration_text(report, format);
 }
 
+// ----- calibrate band -------------------------------------------------------------------------
+
+constexpr BandParameter kBandParameters[4] = {BandParameter::CriticalI1,
+                                              BandParameter::Friction,
+                                              BandParameter::JLim,
+                                              BandParameter::ShearModulus};
+
+struct BandFlagNames {
+  const char* sd;
+  const char* range;
+  const char* nominal;  // the physical flag of the nominal value
+  const char* unit;     // for help and messages
+};
+constexpr BandFlagNames kBandFlags[4] = {
+    {"--critical-i1-sd", "--critical-i1-range", "--critical-i1", ""},
+    {"--friction-sd", "--friction-range", "--friction", ""},
+    {"--jlim-sd", "--jlim-range", "--jlim", ""},
+    {"--shear-modulus-sd", "--shear-modulus-range", "--shear-modulus", " MPa"},
+};
+
+std::optional<ParameterRange>& range_slot(BandRanges& r, BandParameter p) {
+  switch (p) {
+    case BandParameter::CriticalI1:
+      return r.critical_i1;
+    case BandParameter::Friction:
+      return r.friction;
+    case BandParameter::JLim:
+      return r.j_lim;
+    case BandParameter::ShearModulus:
+      break;
+  }
+  return r.shear_modulus_mpa;
+}
+
+Problem with_band_value(Problem p, BandParameter parameter, double value) {
+  switch (parameter) {
+    case BandParameter::CriticalI1:
+      p.critical_i1 = value;
+      break;
+    case BandParameter::Friction:
+      p.friction = value;
+      break;
+    case BandParameter::JLim:
+      p.material.law = Gent{value};
+      break;
+    case BandParameter::ShearModulus:
+      p.material.shear_modulus_mpa = value;
+      break;
+  }
+  return p;
+}
+
+std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format format) {
+  BandReport report;
+  report.problem = make_problem(pf);
+  require_finite(f.band_sd_multiple, "--sd-multiple", "> 0", f.band_sd_multiple > 0.0);
+  report.sd_multiple = f.band_sd_multiple;
+  if (f.band_samples < 2 || f.band_samples > 1000)
+    throw InputError(
+        fmt::format("--samples: must be in the range 2 to 1000, got {}", f.band_samples));
+  const BandParameters nominal = [&] {
+    BandParameters b;
+    b.critical_i1 = report.problem.critical_i1;
+    b.friction = report.problem.friction;
+    if (const auto* gent = std::get_if<Gent>(&report.problem.material.law)) b.j_lim = gent->j_lim;
+    b.shear_modulus_mpa = report.problem.material.shear_modulus_mpa;
+    return b;
+  }();
+  bool any = false;
+  for (int i = 0; i < 4; ++i) {
+    const auto p = kBandParameters[i];
+    const auto& names = kBandFlags[i];
+    const bool by_sd = f.band_sd_option[i]->count() > 0;
+    const bool by_range = f.band_range_option[i]->count() > 0;
+    if (!by_sd && !by_range) continue;
+    const char* flag = by_sd ? names.sd : names.range;
+    if (p == BandParameter::JLim && !nominal.j_lim)
+      throw InputError(
+          fmt::format("{}: J_lim is a parameter of the Gent law; needs --material gent, got {}",
+                      flag,
+                      pf.material));
+    const double x = nominal.value(p);
+    ParameterRange range;
+    if (by_sd) {
+      const double sd = f.band_sd[i];
+      require_finite(sd, names.sd, ">= 0", sd >= 0.0);
+      report.sd[i] = sd;
+      range = plus_minus(x, sd, f.band_sd_multiple);
+    } else {
+      const auto& v = f.band_range[i];
+      if (v.size() != 2)
+        throw InputError(fmt::format("{}: expected LO,HI (two numbers), got {} value{}",
+                                     flag,
+                                     v.size(),
+                                     v.size() == 1 ? "" : "s"));
+      range = {v[0], v[1]};
+      if (!std::isfinite(range.lower) || !std::isfinite(range.upper) || range.lower > range.upper)
+        throw InputError(fmt::format("{}: must be two finite numbers LO <= HI{}, got {},{}",
+                                     flag,
+                                     names.unit,
+                                     range.lower,
+                                     range.upper));
+      if (x < range.lower || x > range.upper)
+        throw InputError(
+            fmt::format("{}: [{}, {}] must contain the nominal value {} ({}, or its default)",
+                        flag,
+                        range.lower,
+                        range.upper,
+                        x,
+                        names.nominal));
+    }
+    for (const auto& [end, value] :
+         {std::pair{"lower", range.lower}, std::pair{"upper", range.upper}}) {
+      const auto errors = validation_errors(with_band_value(report.problem, p, value));
+      if (!errors.empty())
+        throw InputError(fmt::format("{}: the {} end of the interval, {:.6g}, is not valid: {}",
+                                     flag,
+                                     end,
+                                     value,
+                                     errors.front()));
+    }
+    range_slot(report.ranges, p) = range;
+    any = true;
+  }
+  if (!any)
+    throw InputError(
+        "calibrate band: give at least one interval, e.g. --critical-i1-sd 4.8 or "
+        "--friction-range 0.1,0.3 (see calibrate band --help)");
+  BandOptions options;
+  options.samples_per_range = f.band_samples;
+  try {
+    Progress progress("calibrate band");
+    progress.note("puncture at the corners of the intervals");
+    report.band = puncture_band(report.problem, report.ranges, options);
+  } catch (const std::invalid_argument& e) {
+    rethrow_as_input(e);
+  }
+  if (!report.band.nominal.found)
+    throw SolveError("no puncture point at the nominal parameters: " + report.band.nominal.message);
+  return calibration_text(report, format);
+}
+
 FitLaw fit_law_of(const std::string& material) {
   if (material == "neo-hookean") return FitLaw::NeoHookean;
   if (material == "mooney-rivlin") return FitLaw::MooneyRivlin;
@@ -238,7 +381,8 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
   f.calibrate =
       app.add_subcommand("calibrate",
                          "Model parameters from experiments: critical-i1 (inflation tests),\n"
-                         "friction (hole size), jlim (puncture force)");
+                         "friction (hole size), jlim (puncture force); band (the puncture\n"
+                         "force their uncertainties allow)");
   f.calibrate->require_subcommand(1);
   f.calibrate->footer(kCalibrateFooter);
 
@@ -332,6 +476,59 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
                    "the paper's: 4.8)")
       ->group("Puncture test");
 
+  f.band = f.calibrate->add_subcommand(
+      "band",
+      "The predicted puncture force and depth, and their band, over intervals of the\n"
+      "calibrated parameters (critical I1, friction, J_lim, G): mean +- sd or LO,HI");
+  f.band->footer(
+      "The nominal values are the physical flags' (--critical-i1, --friction, --jlim,\n"
+      "--shear-modulus; default the paper's).  For each parameter give its standard deviation\n"
+      "(the interval is nominal +- --sd-multiple sd) or its range LO,HI; the others stay fixed.\n"
+      "The band is the least and largest prediction over every corner of the intervals (2^k\n"
+      "puncture solves for k parameters).  Each parameter is also varied alone (the others\n"
+      "nominal) at --samples points: its change of the force, its share of the first-order\n"
+      "variance (the dominant parameter) and whether the prediction is monotone along it.\n"
+      "Documented directions: the force rises with critical I1, friction and G and falls with\n"
+      "J_lim; the depth rises with critical I1 and friction, falls with J_lim and does not\n"
+      "depend on G.  The intervals are treated as independent: when J_lim was calibrated from\n"
+      "a puncture force with the same critical I1 (calibrate jlim) their errors are\n"
+      "correlated and the band is conservative.  A corner where the solver fails is reported\n"
+      "(summary warnings, JSON warnings, CSV 'found' column), not left out silently.\n"
+      "Example (the paper's critical I1 95.2 +- 4.8 and mu' 0.18 +- 0.05):\n"
+      "  puncture calibrate band --critical-i1-sd 4.8 --friction-sd 0.05\n"
+      "  puncture calibrate band --jlim-range 110,140 --shear-modulus-sd 0.00025 --format json");
+  const char* band_help[4][2] = {
+      {"Standard deviation of the critical I1 [dimensionless] (>= 0;\nthe paper's: 4.8)",
+       "Range LO,HI of the critical I1 [dimensionless]"},
+      {"Standard deviation of the friction coefficient mu'\n[dimensionless] (>= 0)",
+       "Range LO,HI of mu' [dimensionless] (within [0, 10])"},
+      {"Standard deviation of the Gent J_lim [dimensionless] (>= 0)",
+       "Range LO,HI of J_lim [dimensionless]"},
+      {"Standard deviation of the shear modulus G [MPa] (>= 0)", "Range LO,HI of G [MPa]"},
+  };
+  for (int i = 0; i < 4; ++i) {
+    f.band_sd_option[i] =
+        f.band->add_option(kBandFlags[i].sd, f.band_sd[i], band_help[i][0])->group("Intervals");
+    f.band_range_option[i] =
+        f.band->add_option(kBandFlags[i].range, f.band_range[i], band_help[i][1])
+            ->delimiter(',')
+            ->type_name("LO,HI")
+            ->group("Intervals");
+    f.band_sd_option[i]->excludes(f.band_range_option[i]);
+  }
+  f.band
+      ->add_option("--sd-multiple",
+                   f.band_sd_multiple,
+                   "Intervals from standard deviations are nominal +- this many sd\n"
+                   "(> 0; default 1)")
+      ->group("Intervals");
+  f.band
+      ->add_option("--samples",
+                   f.band_samples,
+                   "Points along each interval, ends included, where the prediction\n"
+                   "is checked for monotonicity (2 to 1000; default 5)")
+      ->group("Intervals");
+
   f.fit = app.add_subcommand("fit", "Least-squares fits of material tests: uniaxial");
   f.fit->require_subcommand(1);
   f.uniaxial = f.fit->add_subcommand(
@@ -367,6 +564,7 @@ std::string run_calibration(const CLI::App& app, const ProblemFlags& problem,
   if (f.critical_i1->parsed()) return run_critical_i1(f, format);
   if (f.friction->parsed()) return run_friction(app, problem, f, format);
   if (f.jlim->parsed()) return run_jlim(app, problem, f, format);
+  if (f.band->parsed()) return run_band(problem, f, format);
   return run_fit_uniaxial(app, problem, f, format);
 }
 

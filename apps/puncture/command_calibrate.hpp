@@ -1,6 +1,7 @@
 #pragma once
 // `calibrate critical-i1|friction|jlim` and `fit uniaxial`: the model's parameters from the
-// paper's experiments (include/puncture/calibration.hpp).
+// paper's experiments (include/puncture/calibration.hpp); `calibrate band`: the puncture band
+// their uncertainties give (include/puncture/puncture_band.hpp).
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -31,6 +32,15 @@ struct CalibrationFlags {
   double critical_i1_sd = 0.0;
   CLI::Option* friction_force_option = nullptr;
 
+  // calibrate band: per parameter (critical I1, friction, J_lim, G) an sd or a LO,HI range
+  CLI::App* band = nullptr;
+  double band_sd[4] = {0.0, 0.0, 0.0, 0.0};
+  std::vector<double> band_range[4];
+  CLI::Option* band_sd_option[4] = {nullptr, nullptr, nullptr, nullptr};
+  CLI::Option* band_range_option[4] = {nullptr, nullptr, nullptr, nullptr};
+  double band_sd_multiple = 1.0;
+  int band_samples = 5;
+
   // fit uniaxial
   CLI::App* uniaxial = nullptr;
   std::string uniaxial_data;
@@ -42,7 +52,8 @@ struct CalibrationFlags {
   bool parsed() const { return calibrate->parsed() || fit->parsed(); }
 };
 
-// Registers `calibrate` (with critical-i1, friction, jlim) and `fit` (with uniaxial) on `app`.
+// Registers `calibrate` (with critical-i1, friction, jlim, band) and `fit` (with uniaxial) on
+// `app`.
 void add_calibration_commands(CLI::App& app, CalibrationFlags& flags);
 
 // Runs the parsed calibration and returns its output text.  `app` is asked which shared flags
