@@ -10,4 +10,5 @@ PYBIND11_MODULE(_puncture, m) {
   puncture::python::bind_problem(m);
   puncture::python::bind_results(m);
   puncture::python::bind_solve(m);
+  puncture::python::bind_calibration(m);
 }

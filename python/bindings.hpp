@@ -17,6 +17,7 @@ void bind_enums(py::module_& m);
 void bind_problem(py::module_& m);
 void bind_results(py::module_& m);
 void bind_solve(py::module_& m);
+void bind_calibration(py::module_& m);  // after bind_solve: raises its SolverError
 
 // A read-only numpy array viewing `values`, which `owner` (a Python object) keeps alive.
 template <class T>
