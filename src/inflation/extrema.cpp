@@ -1,0 +1,176 @@
+// Local maxima (limit points) and minima of the pressure along the inflation curve: a scan in
+// pole stretch, then a root of dp/dlambda0 in each bracket by TOMS 748.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+
+#include "inflation/scaled_inflation.hpp"
+
+namespace puncture {
+
+namespace detail {
+
+SolverOptions differencing_options(const SolverOptions& options) {
+  SolverOptions o = options;
+  o.integration_rel_tol = std::min(options.integration_rel_tol, 1e-12);
+  o.integration_abs_tol = std::min(options.integration_abs_tol, 1e-14);
+  o.shooting_tol = std::min(options.shooting_tol, 1e-11);
+  o.record_fields = false;
+  return o;
+}
+
+void check_curve_options(const InflationProblem& problem, const InflationCurveOptions& curve) {
+  if (curve.points < 2 || curve.points > 100000)
+    throw std::invalid_argument(
+        fmt::format("points must be in the range 2 to 100000, got {}", curve.points));
+  if (curve.scan_points < 8 || curve.scan_points > 100000)
+    throw std::invalid_argument(
+        fmt::format("scan points must be in the range 8 to 100000, got {}", curve.scan_points));
+  const double m = curve.max_pole_stretch;
+  const double lock = locking_pole_stretch(problem.material.law);
+  if (m != 0.0 && (!std::isfinite(m) || m <= 1.0))
+    throw std::invalid_argument(
+        fmt::format("max pole stretch must be 0 (to the burst) or a finite number > 1, got {}", m));
+  if (m != 0.0 && m >= lock)
+    throw std::invalid_argument(fmt::format(
+        "max pole stretch must be below the pole stretch at which the Gent law locks ({:.6g}), "
+        "got {}",
+        lock,
+        m));
+}
+
+namespace {
+
+// Normalised pressure P(l0), or empty when the solver fails there.
+class PressureOfStretch {
+ public:
+  PressureOfStretch(const MaterialLaw& law, const SolverOptions& options)
+      : law_(law), o_(differencing_options(options)) {}
+
+  std::optional<double> operator()(double l0) {
+    const auto s = solve_inflation(law_, l0, o_, guess_);
+    if (!s.ok()) {
+      failure_ = s;
+      return std::nullopt;
+    }
+    guess_ = s.pressure;
+    return s.pressure;
+  }
+  const ScaledInflation& failure() const { return failure_; }
+
+ private:
+  const MaterialLaw& law_;
+  SolverOptions o_;
+  double guess_ = 0.0;
+  ScaledInflation failure_;
+};
+
+struct FailedSolve {
+  ScaledInflation solution;
+};
+
+// dP/dl0 by the four-point central difference with step h (error ~ h^4 P^(5) / 30).
+double slope(PressureOfStretch& pressure, double l0, double h) {
+  double p[4];
+  const double at[4] = {l0 - 2.0 * h, l0 - h, l0 + h, l0 + 2.0 * h};
+  for (int k = 0; k < 4; ++k) {
+    const auto v = pressure(at[k]);
+    if (!v) throw FailedSolve{pressure.failure()};
+    p[k] = *v;
+  }
+  return (p[0] - 8.0 * p[1] + 8.0 * p[2] - p[3]) / (12.0 * h);
+}
+
+double second_derivative(PressureOfStretch& pressure, double l0, double h) {
+  const auto a = pressure(l0 - h), b = pressure(l0), c = pressure(l0 + h);
+  if (!a || !b || !c) throw FailedSolve{pressure.failure()};
+  return (*a - 2.0 * *b + *c) / (h * h);
+}
+
+}  // namespace
+
+}  // namespace detail
+
+PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pole_stretch,
+                                 int scan_points, const SolverOptions& options) {
+  validate(problem);
+  InflationCurveOptions check;
+  check.max_pole_stretch = max_pole_stretch;
+  check.scan_points = scan_points;
+  if (max_pole_stretch == 0.0)
+    throw std::invalid_argument("max pole stretch must be a finite number > 1, got 0");
+  detail::check_curve_options(problem, check);
+
+  PressureExtrema out;
+  const auto& law = problem.material.law;
+  detail::PressureOfStretch pressure(law, options);
+  // The scan: P(1) = 0, then equally spaced pole stretches.
+  const int n = scan_points;
+  std::vector<double> l(n + 1), p(n + 1);
+  l[0] = 1.0;
+  p[0] = 0.0;
+  for (int i = 1; i <= n; ++i) {
+    l[i] = 1.0 + (max_pole_stretch - 1.0) * i / n;
+    const auto v = pressure(l[i]);
+    if (!v) {
+      out.status = pressure.failure().status;
+      out.message = fmt::format(
+          "the pressure scan failed at pole stretch {:g}: {}", l[i], pressure.failure().message);
+      return out;
+    }
+    p[i] = *v;
+  }
+  const double scale = pressure_scale_mpa(problem);
+  try {
+    for (int i = 1; i < n; ++i) {
+      const double left = p[i] - p[i - 1], right = p[i + 1] - p[i];
+      if (!(left * right < 0.0)) continue;
+      // The derivative's step: fine against the bracket, and clear of the flat state.
+      const double h = std::min(0.25 * (l[i] - l[i - 1]), 0.2 * (l[i - 1] - 1.0));
+      auto d = [&](double x) { return detail::slope(pressure, x, h); };
+      double lo = l[i - 1], hi = l[i + 1];
+      double d_lo = d(lo), d_mid = d(l[i]), d_hi = d(hi);
+      if (d_lo * d_mid <= 0.0) {
+        hi = l[i];
+        d_hi = d_mid;
+      } else if (d_mid * d_hi <= 0.0) {
+        lo = l[i];
+        d_lo = d_mid;
+      } else {
+        continue;  // two extrema within one scan step cancelled out: the scan is too coarse
+      }
+      double at = d_lo == 0.0 ? lo : hi;
+      if (d_lo != 0.0 && d_hi != 0.0) {
+        std::uintmax_t iterations = 60;
+        const auto bracket = boost::math::tools::toms748_solve(
+            d, lo, hi, d_lo, d_hi, boost::math::tools::eps_tolerance<double>(40), iterations);
+        at = 0.5 * (bracket.first + bracket.second);
+      }
+      PressureExtremum e;
+      e.kind = left > 0.0 ? ExtremumKind::Maximum : ExtremumKind::Minimum;
+      e.pressure_slope_mpa = scale * d(at);
+      e.curvature_mpa = scale * detail::second_derivative(pressure, at, h);
+      e.state = detail::to_physical(problem, detail::solve_inflation(law, at, options, p[i]));
+      if (!e.state.ok()) {
+        out.status = e.state.status;
+        out.message = fmt::format(
+            "the extremum at pole stretch {:g} could not be solved: {}", at, e.state.message);
+        return out;
+      }
+      out.extrema.push_back(std::move(e));
+    }
+  } catch (const detail::FailedSolve& f) {
+    out.status = f.solution.status;
+    out.message = "a pressure extremum could not be located: " + f.solution.message;
+    return out;
+  }
+  out.status = Status::Converged;
+  return out;
+}
+
+}  // namespace puncture

@@ -1,0 +1,232 @@
+// One inflated equilibrium at a given pole stretch: shooting on the pressure from the pole's
+// regular start to the clamp condition lambda2(1) = 1, with Boost's TOMS 748.
+#include "shooting.hpp"
+
+#include <fmt/format.h>
+
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+
+#include "inflation/inflation_ode.hpp"
+#include "inflation/scaled_inflation.hpp"
+#include "interior_maximum.hpp"
+#include "puncture/calibration.hpp"
+
+namespace puncture::detail {
+
+namespace {
+
+template <class Law>
+class InflationShooter {
+ public:
+  InflationShooter(const Law& law, const SolverOptions& options)
+      : law_(law),
+        o_(options),
+        integration_{options.integration_rel_tol, options.integration_abs_tol, options.max_steps},
+        max_i1_(law.max_i1()) {}
+
+  struct Run {
+    bool ok = false;
+    std::string why;          // when not ok
+    InflationOdeState end{};  // at the clamp
+    PoleStart start{};
+  };
+
+  // Integrates from the pole to the clamp at pressure P.  With `out`, also records the samples
+  // and the largest I1 into it.
+  Run run(double l0, double pressure, ScaledInflation* out) const {
+    Run result;
+    const auto start = pole_start(law_, l0, pressure, max_i1_);
+    if (!start) {
+      result.why = "the pole's start failed";
+      return result;
+    }
+    result.start = *start;
+    const InflationSystem<Law> system{law_, pressure, max_i1_};
+    IntegrationSettings integration = integration_;
+    if (out) {
+      out->samples.clear();
+      integration.max_step = (1.0 - start->r_ref) / std::max(1, o_.field_points);
+    }
+    InflationOdeState x = start->x;
+    InteriorMaximum<InflationOdeState> i1_max;
+    result.ok = integrate_part(
+        system, x, start->r_ref, 1.0, integration, [&](double r, const InflationOdeState& y) {
+          if (out) {
+            i1_max.observe(r, y, first_invariant(1.0 + y[1], 1.0 + y[2]));
+            out->samples.push_back({r, y[0], 1.0 + y[1], 1.0 + y[2], y[3]});
+          }
+          return true;
+        });
+    if (!result.ok) {
+      result.why = "the integration could not reach the clamp (locking or a collapsed meridian)";
+      return result;
+    }
+    result.end = x;
+    if (out) {
+      auto found = i1_max.sampled();
+      try {
+        IntegrationStepper<InflationOdeState> rk;
+        found = i1_max.refine(
+            [&](double ra, const InflationOdeState& xa, double rb) {
+              InflationOdeState y;
+              rk.do_step(system, xa, ra, y, rb - ra);
+              return y;
+            },
+            [](double, const InflationOdeState& y) {
+              return first_invariant(1.0 + y[1], 1.0 + y[2]);
+            });
+      } catch (const IntegrationFailure&) {
+      }
+      const double pole_i1 = first_invariant(l0, l0);
+      if (pole_i1 >= found.value) {
+        out->max_i1 = pole_i1;
+        out->max_i1_r_ref = 0.0;
+        out->max_i1_radius = 0.0;
+      } else {
+        out->max_i1 = found.value;
+        out->max_i1_r_ref = found.r;
+        out->max_i1_radius = (1.0 + found.state[2]) * found.r;
+      }
+    }
+    return result;
+  }
+
+  ScaledInflation solve(double l0, double guess) const {
+    ScaledInflation sol;
+    sol.pole_stretch = l0;
+    int evaluations = 0;
+    std::string last_failure;
+    // 1 - lambda2(1): increases with P, from 1 - l0 < 0 at P = 0.  A meridian that cannot
+    // reach the clamp has curled towards the axis (too much pressure): the positive side.
+    auto residual = [&](double pressure) -> std::optional<double> {
+      ++evaluations;
+      const auto r = run(l0, pressure, nullptr);
+      if (!r.ok) {
+        last_failure = r.why;
+        return std::nullopt;
+      }
+      return -r.end[2];
+    };
+    auto g = [&](double p) { return residual_or_beyond(residual, p); };
+
+    double p = guess > 0.0 ? guess : initial_pressure(l0);
+    double value = g(p);
+    double factor = guess > 0.0 ? 1.02 : 2.0;
+    double lo = p, hi = p, g_lo = value, g_hi = value;
+    bool bracketed = false;
+    for (int k = 0; k < 200 && !bracketed; ++k) {
+      if (g_hi < 0.0) {  // both ends below the root: move up
+        lo = hi;
+        g_lo = g_hi;
+        hi = lo * factor;
+        g_hi = g(hi);
+      } else if (g_lo >= 0.0) {  // both above: move down
+        hi = lo;
+        g_hi = g_lo;
+        lo = hi / factor;
+        g_lo = g(lo);
+      }
+      bracketed = g_lo < 0.0 && g_hi >= 0.0;
+      factor = std::min(factor * factor, 16.0);
+    }
+    sol.evaluations = evaluations;
+    if (!bracketed) {
+      sol.message = fmt::format("no pressure meets the clamp condition at pole stretch {:g}{}",
+                                l0,
+                                last_failure.empty() ? "" : " (" + last_failure + ")");
+      return sol;
+    }
+    double pressure = hi;
+    if (g_hi != 0.0) {
+      std::uintmax_t iterations = static_cast<std::uintmax_t>(o_.max_shooting_iterations);
+      const auto tolerance = [](double a, double b) {
+        return std::abs(b - a) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(b);
+      };
+      const auto bracket =
+          boost::math::tools::toms748_solve(g, lo, hi, g_lo, g_hi, tolerance, iterations);
+      pressure = 0.5 * (bracket.first + bracket.second);
+    }
+    sol.pressure = pressure;
+    const auto final_run = run(l0, pressure, &sol);
+    sol.evaluations = evaluations + 1;
+    if (!final_run.ok) {
+      sol.message = "the converged meridian could not be integrated again: " + final_run.why;
+      return sol;
+    }
+    const auto& x = final_run.end;
+    sol.residual = std::abs(x[2]);
+    sol.slope_rate = final_run.start.slope_rate;
+    sol.pole_stress = final_run.start.pole_stress;
+    sol.pole_height = x[3];
+    sol.volume = x[4];
+    sol.energy = x[5];
+    sol.clamp_l1 = 1.0 + x[1];
+    sol.clamp_slope = std::atan2(0.5 * pressure, x[0]);  // r = 1 at the clamp
+    // After the bracket has collapsed, what is left is the integration's noise: accepted up
+    // to a hundred times the tolerance (as the indentation solver does).
+    if (sol.residual <= 100.0 * o_.shooting_tol) {
+      sol.status = Status::Converged;
+    } else {
+      sol.message = fmt::format(
+          "the clamp residual {:.3g} stays above the tolerance {:.3g} at pole stretch {:g}",
+          sol.residual,
+          o_.shooting_tol,
+          l0);
+    }
+    return sol;
+  }
+
+ private:
+  // A first guess of P(l0): the small-strain (Föppl-Hencky) scaling P ~ (l0 - 1)^(3/2), capped
+  // near the neo-Hookean maximum; the bracket search corrects it.
+  static double initial_pressure(double l0) { return std::min(2.5 * std::pow(l0 - 1.0, 1.5), 1.0); }
+
+  const Law& law_;
+  SolverOptions o_;
+  IntegrationSettings integration_;
+  double max_i1_;
+};
+
+}  // namespace
+
+double locking_pole_stretch(const MaterialLaw& law) {
+  const double i1_max = max_first_invariant(law);
+  if (!std::isfinite(i1_max)) return i1_max;
+  return equibiaxial_stretch_for_first_invariant(i1_max);
+}
+
+ScaledInflation solve_inflation(const MaterialLaw& law, double l0, const SolverOptions& options,
+                                double pressure_guess) {
+  ScaledInflation sol;
+  sol.pole_stretch = l0;
+  if (l0 == 1.0) {  // the flat, unloaded membrane
+    sol.status = Status::Converged;
+    if (options.record_fields)
+      for (int k = 1; k <= std::max(1, options.field_points); ++k)
+        sol.samples.push_back(
+            {static_cast<double>(k) / std::max(1, options.field_points), 0.0, 1.0, 1.0, 0.0});
+    return sol;
+  }
+  if (!(first_invariant(l0, l0) < max_first_invariant(law))) {
+    sol.status = Status::BeyondLocking;
+    sol.message = fmt::format(
+        "pole stretch {:g} is at or beyond the Gent locking limit (pole stretch {:.6g}, I1 = 3 "
+        "+ J_lim = {:g})",
+        l0,
+        locking_pole_stretch(law),
+        max_first_invariant(law));
+    return sol;
+  }
+  SolverOptions o = options;
+  o.record_fields = true;  // samples are cheap next to the shooting; the caller drops them
+  auto out = std::visit(
+      [&](const auto& l) { return InflationShooter(l, o).solve(l0, pressure_guess); }, law);
+  if (!options.record_fields) out.samples.clear();
+  return out;
+}
+
+}  // namespace puncture::detail
