@@ -1,0 +1,77 @@
+#pragma once
+// A second solver, independent of the shooting one (it shares only the material laws): the
+// membrane discretised by Lagrange finite elements along the meridian, the unknowns being the
+// current radius r and deflection z at the nodes and the reference radii where the contact with
+// the indenter begins and ends; equilibrium minimises the stored energy at a prescribed depth
+// (docs/verification.md, "The finite-element solver").  It covers the frictionless contact (tip,
+// corner and side) and the membrane held at the indenter's edge; Coulomb friction is not modelled
+// (it is dissipative: there is no energy to minimise).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "puncture/problem.hpp"
+
+namespace puncture {
+
+enum class FeContact {
+  Frictionless,  // the membrane slides freely over the tip, the corner and the side (mu' = 0)
+  Held,          // the membrane is held at the indenter's edge: the stick stage (fully stuck)
+};
+
+struct FeOptions {
+  int elements = 64;  // elements along the free part (Part I); Parts II and III get a quarter each
+  int order = 2;      // polynomial order of the elements: 1 (linear) or 2 (quadratic)
+  int max_newton_iterations = 60;  // per depth step
+  int max_step_halvings = 16;      // continuation in depth: refinements of one step before failing
+  double max_depth_step = 0.05;    // largest continuation step, as a fraction of the clamp radius
+};
+
+// One part of the meridian as the elements represent it: nodes equally spaced in a coordinate
+// xi in [0, 1], mapped to the reference radius linearly or (Part I) logarithmically.
+struct FePart {
+  int part = 1;                       // 1 free, 2 on the indenter's side, 3 under the tip
+  double start_radius_mm = 0.0;       // reference radius R of its inner end [mm]
+  double end_radius_mm = 0.0;         // ... and of its outer end [mm]
+  bool logarithmic = false;           // R = R_start (R_end / R_start)^xi, else linear in xi
+  int elements = 0;                   // each of `order` + 1 nodes, neighbours sharing one
+  std::vector<double> radius_mm;      // current radius r at the nodes [mm]
+  std::vector<double> deflection_mm;  // deflection z below the clamp plane at the nodes [mm]
+};
+
+struct FeState {
+  bool converged = false;
+  std::string message;  // why, when not converged
+  FeContact contact = FeContact::Frictionless;
+  int order = 2;
+  double depth_mm = 0.0;                    // prescribed indentation depth [mm]
+  double force_n = 0.0;                     // indenter force F = dU/d(depth), the reaction [N]
+  double normalized_force = 0.0;            // F / (2 pi G H A)
+  double stored_energy_nmm = 0.0;           // elastic energy U [N mm]
+  bool part_two = false;                    // the membrane wraps the indenter's side
+  double part_three_stretch = 1.0;          // a / R at the corner (1 when held)
+  double corner_reference_radius_mm = 0.0;  // R at the corner (edge of Part III)
+  double part_two_top_reference_radius_mm = 0.0;  // R where the membrane leaves the side
+  double max_first_invariant = 3.0;               // largest I1 at the quadrature points and nodes
+  double max_first_invariant_reference_radius_mm = 0.0;
+  int newton_iterations = 0;  // in the last depth step
+  int unknowns = 0;
+  std::vector<FePart> parts;  // from the centre outward
+};
+
+// States at the given depths [mm] (increasing, > 0), each reached by continuation in depth from
+// the flat membrane.  Throws std::invalid_argument for an invalid problem, depths or options.
+std::vector<FeState> fe_solve_at_depths(const Problem& problem,
+                                        const std::vector<double>& depths_mm, FeContact contact,
+                                        const FeOptions& options = {});
+FeState fe_solve_at_depth(const Problem& problem, double depth_mm, FeContact contact,
+                          const FeOptions& options = {});
+
+// I1 of the finite-element solution at reference radius R [mm] inside the given part (1, 2 or
+// 3); empty when the state has no such part or R is outside it.
+std::optional<double> fe_first_invariant(const FeState& state, int part,
+                                         double reference_radius_mm);
+
+std::string to_string(FeContact contact);
+
+}  // namespace puncture

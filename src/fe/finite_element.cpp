@@ -1,0 +1,433 @@
+// The finite-element solver: contact configurations, starting guesses, and the continuation in
+// depth that carries the solution from the flat membrane to the requested depths.
+#include "puncture/finite_element.hpp"
+
+#include <fmt/format.h>
+
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "fe/energy_newton.hpp"
+#include "fe/meridian_mesh.hpp"
+#include "fe/part_evaluation.hpp"
+
+namespace puncture {
+namespace {
+
+using fe::fixed_slot;
+using fe::Mesh;
+using fe::MeshPart;
+using fe::Slot;
+using fe::unknown_slot;
+
+enum class Layout {
+  Held,             // Part I from the indenter's edge, R = a
+  SlipWithoutSide,  // Part III under the tip, then Part I from the corner
+  SlipWithSide,     // Part III, Part II on the side, Part I
+};
+
+// Everything normalised by the clamp radius A.
+struct Scaled {
+  double a = 0.08;     // indenter radius
+  double depth = 0.0;  // indentation depth
+};
+
+// The mesh of a layout at a depth.  The numbering of the unknowns depends only on the layout,
+// the element counts and the order, so a solution at one depth starts the next.  With the side
+// wrapped, the reference length of Part II, `side_length`, is prescribed: the point where the
+// membrane leaves the side is found outside the energy minimisation (solve_wrapped).
+Mesh build_mesh(Layout layout, const Scaled& s, const FeOptions& options,
+                double side_length = 0.0) {
+  Mesh mesh;
+  mesh.order = options.order;
+  const int p = options.order;
+  const int n1 = options.elements, n23 = std::max(2, options.elements / 4);
+  int next = 0;
+  auto unknown = [&] { return unknown_slot(next++); };
+  const Slot at_depth = fixed_slot(s.depth, true);
+
+  Slot corner_radius = fixed_slot(s.a);  // R at the corner: unknown when the membrane slides
+  Slot side_top_radius = corner_radius;  // R where Part I begins
+  Slot part_one_first_z = at_depth;
+  if (layout != Layout::Held) {
+    corner_radius = unknown();
+    side_top_radius = corner_radius;
+    MeshPart tip{3, false, n23, fixed_slot(0.0), corner_radius, {}, {}};
+    for (int i = 0; i <= n23 * p; ++i) {
+      tip.r.push_back(i == 0 ? fixed_slot(0.0) : i == n23 * p ? fixed_slot(s.a) : unknown());
+      tip.z.push_back(at_depth);
+    }
+    mesh.parts.push_back(tip);
+  }
+  if (layout == Layout::SlipWithSide) {
+    side_top_radius = unknown_slot(corner_radius.index, side_length);
+    MeshPart side{2, false, n23, corner_radius, side_top_radius, {}, {}};
+    for (int i = 0; i <= n23 * p; ++i) {
+      side.r.push_back(fixed_slot(s.a));
+      side.z.push_back(i == 0 ? at_depth : unknown());
+    }
+    part_one_first_z = side.z.back();
+    mesh.parts.push_back(side);
+  }
+  MeshPart free_part{1, true, n1, side_top_radius, fixed_slot(1.0), {}, {}};
+  for (int i = 0; i <= n1 * p; ++i) {
+    const bool first = i == 0, last = i == n1 * p;
+    free_part.r.push_back(first ? fixed_slot(s.a) : last ? fixed_slot(1.0) : unknown());
+    free_part.z.push_back(first ? part_one_first_z : last ? fixed_slot(0.0) : unknown());
+  }
+  mesh.parts.push_back(free_part);
+  mesh.unknowns = next;
+  return mesh;
+}
+
+// Reference radius of node i of a part whose ends are at `start` and `end`.
+double node_radius(const MeshPart& part, int order, int i, double start, double end) {
+  const double xi = double(i) / (part.elements * order);
+  return part.logarithmic ? start * std::pow(end / start, xi) : start + xi * (end - start);
+}
+
+// The converged state in physical units.
+FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::VectorXd& x,
+                   const fe::Assembly& assembly, const Scaled& s, FeContact contact) {
+  const double A = problem.geometry.clamp_radius_mm;
+  FeState state;
+  state.contact = contact;
+  state.order = mesh.order;
+  state.depth_mm = s.depth * A;
+  state.normalized_force = assembly.reaction;
+  state.force_n = assembly.reaction * force_scale_n(problem);
+  state.stored_energy_nmm = assembly.energy * 2.0 * std::numbers::pi *
+                            problem.material.shear_modulus_mpa * problem.geometry.thickness_mm * A *
+                            A;
+  state.unknowns = mesh.unknowns;
+  state.corner_reference_radius_mm = problem.geometry.indenter_radius_mm;
+  state.part_two_top_reference_radius_mm = state.corner_reference_radius_mm;
+  for (const MeshPart& part : mesh.parts) {
+    FePart out;
+    out.part = part.part;
+    out.logarithmic = part.logarithmic;
+    out.elements = part.elements;
+    out.start_radius_mm = fe::value_of(part.start, x) * A;
+    out.end_radius_mm = fe::value_of(part.end, x) * A;
+    for (std::size_t i = 0; i < part.r.size(); ++i) {
+      out.radius_mm.push_back(fe::value_of(part.r[i], x) * A);
+      out.deflection_mm.push_back(fe::value_of(part.z[i], x) * A);
+    }
+    if (part.part == 3) state.corner_reference_radius_mm = out.end_radius_mm;
+    if (part.part == 1) state.part_two_top_reference_radius_mm = out.start_radius_mm;
+    if (part.part == 2) state.part_two = true;
+    // Largest I1 at the quadrature points and at both ends of every element.
+    std::array<double, fe::kMaxLocal> values;
+    std::array<const Slot*, fe::kMaxLocal> slots;
+    for (int e = 0; e < part.elements; ++e) {
+      const fe::ElementPlace place = fe::gather(mesh, part, e, x, values, slots);
+      std::vector<double> etas{-1.0, 1.0};
+      for (const auto& [eta, w] : fe::gauss_points()) etas.push_back(eta);
+      for (double eta : etas) {
+        double l1, l2, radius, weight;
+        if (!fe::stretches_at(place, values, eta, l1, l2, radius, weight)) continue;
+        const double i1 = first_invariant(l1, l2);
+        if (i1 > state.max_first_invariant) {
+          state.max_first_invariant = i1;
+          state.max_first_invariant_reference_radius_mm = radius * A;
+        }
+      }
+    }
+    state.parts.push_back(std::move(out));
+  }
+  state.part_three_stretch = problem.geometry.indenter_radius_mm / state.corner_reference_radius_mm;
+  return state;
+}
+
+// dr/dR where Part I leaves the indenter: negative when the free membrane would enter it.
+double corner_radial_slope(const FeState& state) {
+  for (const FePart& part : state.parts)
+    if (part.part == 1) {
+      const double dR = node_radius(MeshPart{1, true, part.elements, {}, {}, {}, {}},
+                                    state.order,
+                                    1,
+                                    part.start_radius_mm,
+                                    part.end_radius_mm) -
+                        part.start_radius_mm;
+      return (part.radius_mm[1] - part.radius_mm[0]) / dR;
+    }
+  return 1.0;
+}
+
+// Starting values of the unknowns of `mesh` at depth s.depth: from a previous state (its shape,
+// the deflections scaled to the new depth), or for the first step a cone in ln R.
+Eigen::VectorXd starting_guess(const Mesh& mesh, const Scaled& s, const FeState* previous,
+                               double clamp_radius) {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(mesh.unknowns);
+  const double A = clamp_radius;
+  const double corner = previous ? previous->corner_reference_radius_mm / A : s.a * 0.999;
+  const double scale = previous ? s.depth / (previous->depth_mm / A) : 1.0;
+  for (const MeshPart& part : mesh.parts)  // the moving corner first
+    if (part.part == 3) x[part.end.index] = corner;
+  for (const MeshPart& part : mesh.parts) {
+    const double start = fe::value_of(part.start, x), end = fe::value_of(part.end, x);
+    for (std::size_t i = 0; i < part.r.size(); ++i) {
+      const double R = node_radius(part, mesh.order, int(i), start, end);
+      double r = R, z = s.depth;
+      std::optional<fe::PointFields> old;
+      if (previous)
+        for (const FePart& p : previous->parts)
+          if (!old) old = fe::evaluate_part(p, previous->order, R * A);
+      if (old) {
+        r = old->radius / A;
+        z = old->deflection / A * scale;
+      } else if (part.part == 3) {
+        r = R * s.a / corner;
+      } else if (part.part == 1) {
+        z = s.depth * std::log(R) / std::log(start);
+      }
+      if (part.r[i].index >= 0) x[part.r[i].index] = r;
+      if (part.z[i].index >= 0) x[part.z[i].index] = std::min(z, s.depth);
+    }
+  }
+  return x;
+}
+
+struct StepResult {
+  bool converged = false;
+  std::string message;
+  FeState state;
+};
+
+// Minimises the energy of one layout from `x` (updated in place).
+StepResult minimise(const Problem& problem, const Mesh& mesh, const Scaled& s, Eigen::VectorXd& x,
+                    FeContact contact, const FeOptions& options) {
+  const fe::NewtonResult newton =
+      fe::minimise_energy(problem.material.law, mesh, x, options.max_newton_iterations);
+  StepResult step;
+  step.converged = newton.converged;
+  step.message = newton.message;
+  if (newton.converged) {
+    step.state = make_state(problem, mesh, x, newton.assembly, s, contact);
+    step.state.newton_iterations = newton.iterations;
+    step.state.converged = true;
+  }
+  return step;
+}
+
+StepResult solve_layout(const Problem& problem, Layout layout, const Scaled& s,
+                        const FeState* previous, FeContact contact, const FeOptions& options) {
+  const Mesh mesh = build_mesh(layout, s, options);
+  Eigen::VectorXd x = starting_guess(mesh, s, previous, problem.geometry.clamp_radius_mm);
+  return minimise(problem, mesh, s, x, contact, options);
+}
+
+// The membrane wrapped on the side.  Where it leaves the side is not an energy minimum over the
+// layout's unknowns: with the free part allowed to cross the side, the energy E(L, depth) falls
+// as the side's reference length L shortens, and dE/dL >= 0 vanishes without changing sign at
+// the answer L* (a double root: Newton on it converges only linearly).  Two consequences are
+// used.  The free part leaves the side tangentially at L*: dr/dR where it begins is < 0 (it
+// enters the indenter) for L < L* and > 0 (a kink outward) for L > L*, which brackets L*.  And
+// since dE/dL = d2E/dL2 = 0 at L* for every depth, d2E/dL d(depth) = 0 there: the force
+// dE/d(depth) is stationary (a maximum) in L at L*.  Boost's Brent finds that maximum; the
+// force there is insensitive to the error of L, and converges at the elements' full order
+// (the discrete tangency condition alone places L* only to O(h), the force to O(h^2)).
+StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState& previous,
+                         FeContact contact, const FeOptions& options, bool precise) {
+  const double A = problem.geometry.clamp_radius_mm;
+  const double corner = previous.corner_reference_radius_mm / A;
+  double length =
+      previous.part_two
+          ? (previous.part_two_top_reference_radius_mm - previous.corner_reference_radius_mm) / A
+          : 1e-3 * corner;
+  // Starting values for every side length: the nodes sit at the same places along the parts.
+  Eigen::VectorXd x =
+      starting_guess(build_mesh(Layout::SlipWithSide, s, options, length), s, &previous, A);
+  StepResult last;
+  auto slope_at = [&](double length) {
+    const Mesh mesh = build_mesh(Layout::SlipWithSide, s, options, length);
+    Eigen::VectorXd trial = x;
+    last = minimise(problem, mesh, s, trial, contact, options);
+    if (!last.converged) throw std::runtime_error(last.message);
+    x = trial;
+    return corner_radial_slope(last.state);
+  };
+  try {
+    double slope = slope_at(length);
+    double lo = length, hi = length, slope_lo = slope, slope_hi = slope;
+    // Bracket the tangential departure by growing or shrinking the side's length in steps small
+    // enough for the last solution to start the next.
+    constexpr double factor = 1.25;
+    for (int k = 0; k < 200 && (slope_lo >= 0.0 || slope_hi <= 0.0); ++k) {
+      if (slope_hi <= 0.0) {
+        lo = hi, slope_lo = slope_hi;
+        hi *= factor;
+        slope_hi = slope_at(hi);
+      } else {
+        hi = lo, slope_hi = slope_lo;
+        lo /= factor;
+        if (lo < 1e-12 * corner) break;
+        slope_lo = slope_at(lo);
+      }
+    }
+    if (!(slope_lo < 0.0 && slope_hi > 0.0)) {
+      StepResult none;
+      none.message = "no side contact: the free part leaves the corner outward";
+      return none;
+    }
+    if (!precise) {  // a continuation step on the way: the tangential departure is near enough
+      boost::uintmax_t iterations = 60;
+      const auto [a, b] =
+          boost::math::tools::toms748_solve(slope_at,
+                                            lo,
+                                            hi,
+                                            slope_lo,
+                                            slope_hi,
+                                            boost::math::tools::eps_tolerance<double>(20),
+                                            iterations);
+      slope_at(0.5 * (a + b));
+      return last;
+    }
+    // The force is stationary (a maximum) in the side's length at the answer (see above): Brent
+    // finds it near the bracket, and the force there is insensitive to the length's error.
+    boost::uintmax_t iterations = 200;
+    const auto best = boost::math::tools::brent_find_minima(
+        [&](double length) {
+          slope_at(length);
+          return -last.state.normalized_force;
+        },
+        lo / factor,
+        hi * factor,
+        std::numeric_limits<double>::digits / 2,
+        iterations);
+    slope_at(best.first);
+  } catch (const std::runtime_error& e) {
+    StepResult failed;
+    failed.message = e.what();
+    return failed;
+  }
+  return last;
+}
+
+// One continuation step to depth s.depth: the layout of the previous state, switched when the
+// solution leaves it (the free part entering the indenter, or the side contact vanishing).
+StepResult solve_step(const Problem& problem, Layout& layout, const Scaled& s,
+                      const FeState* previous, FeContact contact, const FeOptions& options,
+                      bool precise) {
+  if (layout == Layout::Held) {
+    StepResult step = solve_layout(problem, layout, s, previous, contact, options);
+    if (step.converged && corner_radial_slope(step.state) < 0.0) {
+      step.converged = false;
+      step.message = "the held membrane would wrap the indenter's side (outside the stick model)";
+    }
+    return step;
+  }
+  if (layout == Layout::SlipWithoutSide) {
+    StepResult step = solve_layout(problem, layout, s, previous, contact, options);
+    if (!step.converged || corner_radial_slope(step.state) >= 0.0) return step;
+    // Started from the last state outside the indenter: the one just found crosses the side.
+    StepResult wrapped =
+        solve_wrapped(problem, s, previous ? *previous : step.state, contact, options, precise);
+    if (wrapped.converged) layout = Layout::SlipWithSide;
+    return wrapped;
+  }
+  StepResult wrapped = solve_wrapped(problem, s, *previous, contact, options, precise);
+  if (wrapped.converged) return wrapped;
+  // The side contact may have shrunk to nothing: try without it.
+  StepResult plain = solve_layout(problem, Layout::SlipWithoutSide, s, previous, contact, options);
+  if (plain.converged && corner_radial_slope(plain.state) >= 0.0) {
+    layout = Layout::SlipWithoutSide;
+    return plain;
+  }
+  return wrapped;
+}
+
+void check_options(const FeOptions& options) {
+  if (options.order != 1 && options.order != 2)
+    throw std::invalid_argument(
+        fmt::format("element order must be 1 or 2 (got {})", options.order));
+  if (options.elements < 2 || options.elements > 100000)
+    throw std::invalid_argument(
+        fmt::format("elements must be between 2 and 100000 (got {})", options.elements));
+  if (options.max_newton_iterations < 1 || options.max_step_halvings < 0 ||
+      !(options.max_depth_step > 0.0 && options.max_depth_step <= 1.0))
+    throw std::invalid_argument(
+        "max Newton iterations must be >= 1, step halvings >= 0 and the depth step in (0, 1]");
+}
+
+}  // namespace
+
+std::vector<FeState> fe_solve_at_depths(const Problem& problem,
+                                        const std::vector<double>& depths_mm, FeContact contact,
+                                        const FeOptions& options) {
+  validate(problem);
+  check_options(options);
+  const double A = problem.geometry.clamp_radius_mm;
+  double last = 0.0;
+  for (double d : depths_mm) {
+    if (!std::isfinite(d) || d <= last)
+      throw std::invalid_argument(fmt::format(
+          "depths must be finite, > 0 and increasing (got {} mm after {} mm)", d, last));
+    last = d;
+  }
+  Scaled s;
+  s.a = problem.geometry.indenter_radius_mm / A;
+  Layout layout = contact == FeContact::Held ? Layout::Held : Layout::SlipWithoutSide;
+  std::vector<FeState> states;
+  std::optional<FeState> previous;
+  double depth = 0.0, step = options.max_depth_step;
+  for (double target_mm : depths_mm) {
+    const double target = target_mm / A;
+    int halvings = 0;
+    std::string failure;
+    while (depth < target && failure.empty()) {
+      s.depth = std::min(target, depth + step);
+      if (target - s.depth < 1e-3 * step) s.depth = target;  // no sliver of a last step
+      StepResult result = solve_step(
+          problem, layout, s, previous ? &*previous : nullptr, contact, options, s.depth == target);
+      if (result.converged) {
+        depth = s.depth;
+        previous = std::move(result.state);
+        step = std::min(2.0 * step, options.max_depth_step);
+      } else if (++halvings > options.max_step_halvings) {
+        failure = fmt::format(
+            "no equilibrium found beyond depth {:.6g} mm: {}", depth * A, result.message);
+      } else {
+        step *= 0.5;
+      }
+    }
+    if (!failure.empty()) {
+      FeState failed;
+      failed.contact = contact;
+      failed.depth_mm = target_mm;
+      failed.message = failure;
+      for (std::size_t k = states.size(); k < depths_mm.size(); ++k) {
+        failed.depth_mm = depths_mm[k];
+        states.push_back(failed);
+      }
+      return states;
+    }
+    states.push_back(*previous);
+  }
+  return states;
+}
+
+FeState fe_solve_at_depth(const Problem& problem, double depth_mm, FeContact contact,
+                          const FeOptions& options) {
+  return fe_solve_at_depths(problem, {depth_mm}, contact, options).front();
+}
+
+std::optional<double> fe_first_invariant(const FeState& state, int part,
+                                         double reference_radius_mm) {
+  for (const FePart& p : state.parts)
+    if (p.part == part) {
+      const auto f = fe::evaluate_part(p, state.order, reference_radius_mm);
+      if (!f) return std::nullopt;
+      return first_invariant(f->l1, f->l2);
+    }
+  return std::nullopt;
+}
+
+std::string to_string(FeContact contact) {
+  return contact == FeContact::Held ? "held at the indenter's edge" : "frictionless";
+}
+
+}  // namespace puncture
