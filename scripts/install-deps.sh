@@ -3,7 +3,7 @@
 # bindings and plots.
 set -euo pipefail
 packages=(build-essential cmake libboost-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
-          libfmt-dev libgtest-dev libbenchmark-dev
+          libfmt-dev libgtest-dev libbenchmark-dev librapidcheck-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-matplotlib
           python3-pytest)
 missing=()

@@ -57,6 +57,11 @@ std::string crack_location(const detail::ScaledSolution& sol) {
 
 StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options) {
   StageBoundary b;
+  if (const auto errors = validation_errors(p); !errors.empty()) {
+    b.status = Status::InvalidInput;
+    b.message = errors.front();
+    return b;
+  }
   const auto o = without_fields(options);
   const double scale = force_scale_n(p);
   const double big_a = p.geometry.clamp_radius_mm;
@@ -163,6 +168,25 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
     out.message = "the state at puncture did not converge: " + sol.message;
     return out;
   }
+  // The force searches count a failed solve as beyond the root, so a stage whose solutions end
+  // (a held membrane that would wrap the side, locking) before the largest I1 reaches the
+  // critical value would return that end: not a puncture.  At a true root the largest I1 is
+  // the critical one to ~1e-8 relative (the corner solve's tolerance; the path search brackets
+  // the force to a few ulps): 1e-6 relative leaves a margin.
+  if (const double reached = detail::max_first_invariant(sol);
+      !at_switch && reached < i1c * (1.0 - 1e-6)) {
+    const auto beyond = detail::solve_scaled(p, *f_puncture * (1.0 + 1e-9), stage, o);
+    out.message = fmt::format(
+        "no puncture found: in the {} stage the largest I1 reaches only {:.8g} (critical {:g}) "
+        "at {:.6g} N, where the solutions end{}",
+        to_string(stage),
+        reached,
+        i1c,
+        *f_puncture * scale,
+        beyond.ok() ? std::string() : ": " + beyond.message);
+    return out;
+  }
+
   out.found = true;
   out.state = detail::to_physical(p, sol, stage, options);
   out.force_n = out.state.force_n;
