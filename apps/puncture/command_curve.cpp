@@ -15,8 +15,9 @@ void add_curve_options(CLI::App& app, CurveFlags& f) {
   constexpr const char* kCurve = "Curve (for 'curve', the default subcommand)";
   app.add_option("--points",
                  f.points,
-                 "Number of equally spaced depth points from zero to the end of\n"
-                 "the curve [count] (2 to 100000)")
+                 "Number of equally spaced points of the curve [count] (2 to\n"
+                 "100000): depths from zero to the end ('curve'), or pole\n"
+                 "stretches from flat to the end ('inflate')")
       ->group(kCurve)
       ->check(CLI::Range(2, 100000).description(""))
       ->capture_default_str();

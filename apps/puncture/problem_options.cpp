@@ -154,4 +154,21 @@ Problem make_problem(const ProblemFlags& f) {
   return p;
 }
 
+InflationProblem make_inflation_problem(const ProblemFlags& f) {
+  std::vector<std::string> errors;
+  InflationProblem p;
+  p.clamp_radius_mm = f.clamp_radius_mm;
+  p.thickness_mm = f.thickness_mm;
+  p.material.shear_modulus_mpa = f.shear_modulus_mpa;
+  p.material.law = law_of(f, errors);
+  p.critical_i1 = f.critical_i1;
+  for (const auto& e : validation_errors(p)) errors.push_back(with_flag(e));
+  if (!errors.empty()) {
+    std::string all = "invalid input:";
+    for (const auto& e : errors) all += "\n  " + e;
+    throw InputError(all);
+  }
+  return p;
+}
+
 }  // namespace puncture::cli

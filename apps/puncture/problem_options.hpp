@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "puncture/inflation.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture::cli {
@@ -31,5 +32,9 @@ void add_problem_options(CLI::App& app, ProblemFlags& flags);
 // The problem the flags describe.  Throws InputError listing every invalid parameter, each
 // prefixed with its flag, using the library's validation_errors().
 Problem make_problem(const ProblemFlags& flags);
+
+// The membrane the flags describe, for `inflate` (no indenter: the indenter and contact flags
+// are not read).  Throws InputError like make_problem.
+InflationProblem make_inflation_problem(const ProblemFlags& flags);
 
 }  // namespace puncture::cli
