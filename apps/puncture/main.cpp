@@ -7,6 +7,7 @@
 #include "cli_error.hpp"
 #include "command_calibrate.hpp"
 #include "command_inflate.hpp"
+#include "command_verify.hpp"
 #include "commands.hpp"
 #include "figures.hpp"
 #include "output_options.hpp"
@@ -23,7 +24,8 @@ constexpr const char* kDescription =
     "state with all its fields, or the puncture point alone: the puncture force, depth,\n"
     "stretch under the tip and where the crack starts.  `calibrate` and `fit` derive the\n"
     "model's parameters from the paper's experiments; `inflate` is the inflation (bulge)\n"
-    "test of the same membrane under a uniform pressure.\n"
+    "test of the same membrane under a uniform pressure; `verify` checks the solver for\n"
+    "the membrane against independent methods.\n"
     "Units: lengths in mm, forces in N, moduli and stresses in MPa; line tension in N/mm;\n"
     "friction, stretches and the invariant I1 are dimensionless.  Defaults are the\n"
     "paper's lubricated silicone membrane (A = 25 mm, a = 2 mm, H = 0.2 mm, Gent with\n"
@@ -41,6 +43,7 @@ constexpr const char* kFooter =
     "  puncture figures --out figures            the paper's Figs. 11-13, PNG and SVG\n"
     "  puncture calibrate friction --indenter-radius 1 --puncture-force 1.72 --hole-ratio 1.58\n"
     "  puncture fit uniaxial tensile.csv --material gent\n"
+    "  puncture verify --indenter-radius 1        the solver checked for this membrane\n"
     "  puncture inflate --clamp-radius 30       bulge test: pressure to the burst\n"
     "Config file (--config FILE), one 'key = value' per line, keys are the long flag\n"
     "names, e.g.:\n"
@@ -50,7 +53,7 @@ constexpr const char* kFooter =
     "Plots (--plot, figures) run Python 3 with matplotlib (Debian: python3-matplotlib;\n"
     "another interpreter: PUNCTURE_PYTHON=/path/to/python3).\n"
     "Exit codes: 0 success, 1 invalid input, 2 the solver gave no usable result,\n"
-    "3 the plot could not be drawn (no Python or matplotlib).";
+    "3 the plot could not be drawn (no Python or matplotlib), 4 a `verify` check failed.";
 
 constexpr const char* kSubcommandFooter =
     "The physical, curve and output flags (see puncture --help) may also be given.";
@@ -109,6 +112,8 @@ int main(int argc, char** argv) {
     add_calibration_commands(app, calibration_flags);
     InflateFlags inflate_flags;
     add_inflate_command(app, inflate_flags);
+    VerifyFlags verify_flags;
+    add_verify_command(app, verify_flags);
 
     try {
       app.parse(argc, argv);
@@ -151,6 +156,17 @@ int main(int argc, char** argv) {
     }
     const auto format = format_of(output_flags);
     check_writable(output_flags);
+    if (verify_flags.parsed()) {
+      if (plot_option->count() > 0)
+        throw InputError("--plot: 'verify' writes a table; there is nothing to draw");
+      const VerifyOutcome outcome = run_verify(problem, verify_flags, format);
+      write_output(output_flags, outcome.text);
+      if (outcome.passed) return kExitOk;
+      fmt::print(stderr,
+                 "puncture: verification failed: {} check(s) outside their tolerance\n",
+                 outcome.failed);
+      return kExitVerificationFailed;
+    }
     const bool plot = plot_option->count() > 0;
     if (plot) {
       if (puncture->parsed())

@@ -46,4 +46,8 @@ std::string csv_text(const StateReport& report) { return csv(fields_table(report
 
 std::string csv_text(const PunctureReport& report) { return csv(puncture_table(report.puncture)); }
 
+std::string csv_text(const VerifyReport& report) {
+  return csv(verification_table(report.verification));
+}
+
 }  // namespace puncture::cli

@@ -132,6 +132,34 @@ std::string json_text(const StateReport& r) {
       {{"inputs", inputs_json(r.problem)}, {"request", request}, {"state", state_json(r.state)}});
 }
 
+std::string json_text(const VerifyReport& r) {
+  const VerificationReport& v = r.verification;
+  json checks = json::array();
+  for (const VerificationCheck& c : v.checks) {
+    const bool skipped = !has_numbers(c);
+    auto number = [&](double x, const char* what) {
+      return skipped ? json() : json(finite(x, what));
+    };
+    checks.push_back({{"group", c.group},
+                      {"quantity", c.quantity},
+                      {"condition", c.condition},
+                      {"shooting", number(c.shooting, "shooting value")},
+                      {"second_method", number(c.reference, "second method's value")},
+                      {"relative_difference", number(c.difference, "difference")},
+                      {"tolerance", number(c.tolerance, "tolerance")},
+                      {"verdict", to_string(c.verdict)},
+                      {"note", c.note}});
+  }
+  return dump({{"inputs", inputs_json(r.problem)},
+               {"finite_elements", v.elements},
+               {"passed", v.passed()},
+               {"counts",
+                {{"pass", v.count(Verdict::Pass)},
+                 {"fail", v.count(Verdict::Fail)},
+                 {"skipped", v.count(Verdict::Skipped)}}},
+               {"checks", checks}});
+}
+
 std::string json_text(const PunctureReport& r) {
   return dump({{"inputs", inputs_json(r.problem)}, {"puncture", puncture_json(r.puncture)}});
 }

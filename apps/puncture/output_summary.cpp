@@ -208,6 +208,54 @@ std::string summary_text(const StateReport& r) {
   return out;
 }
 
+std::string summary_text(const VerifyReport& r) {
+  const VerificationReport& v = r.verification;
+  std::string out;
+  inputs(out, r.problem);
+  out += fmt::format(
+      "Verification: the shooting solver against independent methods\n"
+      "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
+      "  for their own error), minimising the stored energy; it covers the two limits of\n"
+      "  the friction, mu' = 0 and the membrane held at the indenter's edge.  Friction in\n"
+      "  between (mu' = {} here) is checked by the test suite's Coulomb and capstan identities.\n",
+      v.elements,
+      v.elements / 2,
+      num(r.problem.friction, "friction"));
+  std::string group, condition;
+  for (const VerificationCheck& c : v.checks) {
+    if (c.group != group) {
+      group = c.group;
+      condition.clear();
+      out += fmt::format("{}\n  {:<40}{:>17}{:>17}{:>10}{:>9}  {}\n",
+                         group,
+                         "quantity",
+                         "shooting",
+                         "2nd method",
+                         "rel.diff",
+                         "tol",
+                         "verdict");
+    }
+    if (c.condition != condition) out += fmt::format("  {}\n", condition = c.condition);
+    if (!has_numbers(c)) {
+      out += fmt::format("  {:<40}  {}: {}\n", c.quantity, to_string(c.verdict), c.note);
+      continue;
+    }
+    out += fmt::format("  {:<40}{:>17.10g}{:>17.10g}{:>10.1e}{:>9.0e}  {}\n",
+                       c.quantity,
+                       finite(c.shooting, "shooting value"),
+                       finite(c.reference, "second method's value"),
+                       finite(c.difference, "difference"),
+                       finite(c.tolerance, "tolerance"),
+                       to_string(c.verdict));
+  }
+  out += fmt::format("Result: {} passed, {} failed, {} skipped{}\n",
+                     v.count(Verdict::Pass),
+                     v.count(Verdict::Fail),
+                     v.count(Verdict::Skipped),
+                     v.passed() ? "" : "  (tolerances and their reasons: --format csv or json)");
+  return out;
+}
+
 std::string summary_text(const PunctureReport& r) {
   std::string out;
   inputs(out, r.problem);

@@ -6,6 +6,7 @@
 #include "puncture/equilibrium.hpp"
 #include "puncture/loading_curve.hpp"
 #include "puncture/problem.hpp"
+#include "puncture/verification.hpp"
 
 namespace puncture::cli {
 
@@ -27,6 +28,11 @@ struct StateReport {
 struct PunctureReport {
   Problem problem;
   PuncturePrediction puncture;  // found
+};
+
+struct VerifyReport {
+  Problem problem;
+  VerificationReport verification;
 };
 
 }  // namespace puncture::cli

@@ -88,6 +88,33 @@ Table puncture_table(const PuncturePrediction& p) {
   return t;
 }
 
+Table verification_table(const VerificationReport& report) {
+  Table t;
+  t.columns = {"group",
+               "quantity",
+               "condition",
+               "shooting",
+               "second_method",
+               "relative_difference",
+               "tolerance",
+               "verdict",
+               "note"};
+  for (const VerificationCheck& c : report.checks) {
+    const bool skipped = !has_numbers(c);
+    auto number = [&](double x) { return skipped ? Cell{std::string{}} : Cell{x}; };
+    t.rows.push_back({c.group,
+                      c.quantity,
+                      c.condition,
+                      number(c.shooting),
+                      number(c.reference),
+                      number(c.difference),
+                      number(c.tolerance),
+                      to_string(c.verdict),
+                      c.note});
+  }
+  return t;
+}
+
 double checked_number(const Table& table, std::size_t row, std::size_t column) {
   const auto& cell = table.rows[row][column];
   const double x = std::holds_alternative<int>(cell) ? std::get<int>(cell) : std::get<double>(cell);

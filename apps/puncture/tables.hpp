@@ -7,6 +7,7 @@
 
 #include "puncture/equilibrium.hpp"
 #include "puncture/loading_curve.hpp"
+#include "puncture/verification.hpp"
 
 namespace puncture::cli {
 
@@ -28,6 +29,10 @@ Table fields_table(const MembraneFields& fields);
 // One row: force_n, normalized_force, depth_mm, stage, configuration, part_three_stretch,
 // max_i1, crack_reference_radius_mm, crack_radius_mm, crack_location.
 Table puncture_table(const PuncturePrediction& puncture);
+
+// One row per check: group, quantity, condition, shooting, second_method, relative_difference,
+// tolerance, verdict, note.  A skipped check has empty numbers (NaN: written empty or null).
+Table verification_table(const VerificationReport& report);
 
 // The number in a cell, checked finite (SolveError naming the column otherwise).
 double checked_number(const Table& table, std::size_t row, std::size_t column);

@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <boost/math/tools/minima.hpp>
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -252,6 +251,19 @@ StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState&
   };
   try {
     double slope = slope_at(length);
+    if (!precise) {
+      // A continuation step on the way: one secant step towards the tangential departure gives
+      // the next step a good start; the requested depths are solved precisely.
+      const double other = slope < 0.0 ? 1.05 * length : length / 1.05;
+      const double slope_other = slope_at(other);
+      if (slope_other != slope) {
+        const double secant = other - slope_other * (other - length) / (slope_other - slope);
+        if (secant > 0.5 * std::min(length, other) && secant < 2.0 * std::max(length, other)) {
+          slope_at(secant);
+          return last;
+        }
+      }
+    }
     double lo = length, hi = length, slope_lo = slope, slope_hi = slope;
     // Bracket the tangential departure by growing or shrinking the side's length in steps small
     // enough for the last solution to start the next.
@@ -273,19 +285,6 @@ StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState&
       none.message = "no side contact: the free part leaves the corner outward";
       return none;
     }
-    if (!precise) {  // a continuation step on the way: the tangential departure is near enough
-      boost::uintmax_t iterations = 60;
-      const auto [a, b] =
-          boost::math::tools::toms748_solve(slope_at,
-                                            lo,
-                                            hi,
-                                            slope_lo,
-                                            slope_hi,
-                                            boost::math::tools::eps_tolerance<double>(20),
-                                            iterations);
-      slope_at(0.5 * (a + b));
-      return last;
-    }
     // The force is stationary (a maximum) in the side's length at the answer (see above): Brent
     // finds it near the bracket, and the force there is insensitive to the length's error.
     boost::uintmax_t iterations = 200;
@@ -296,7 +295,7 @@ StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState&
         },
         lo / factor,
         hi * factor,
-        std::numeric_limits<double>::digits / 2,
+        20,  // bits: L to ~1e-6 relative, the force (stationary) to ~1e-12
         iterations);
     slope_at(best.first);
   } catch (const std::runtime_error& e) {
@@ -390,6 +389,10 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
       } else if (++halvings > options.max_step_halvings) {
         failure = fmt::format(
             "no equilibrium found beyond depth {:.6g} mm: {}", depth * A, result.message);
+        const double lock = max_first_invariant(problem.material.law);
+        if (previous && std::isfinite(lock))
+          failure += fmt::format(" (largest I1 there {:.4g}; the material locks at {:.4g})",
+                                 previous->max_first_invariant, lock);
       } else {
         step *= 0.5;
       }

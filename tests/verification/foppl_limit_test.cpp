@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "foppl_membrane.hpp"
+#include "verification/foppl_membrane.hpp"
 #include "puncture/equilibrium.hpp"
 
 namespace puncture {

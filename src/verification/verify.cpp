@@ -1,0 +1,314 @@
+// The cross-checks of `verify` (verification.hpp): each compares the shooting solver with a
+// method that shares nothing with it but the material laws, with a tolerance from that method's
+// own error.
+#include <fmt/format.h>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "puncture/equilibrium.hpp"
+#include "puncture/loading_curve.hpp"
+#include "puncture/verification.hpp"
+#include "verification/foppl_membrane.hpp"
+
+namespace puncture {
+namespace {
+
+Stage stage_of(FeContact contact) {
+  return contact == FeContact::Held ? Stage::Stick : Stage::Slip;
+}
+
+std::string group_of(FeContact contact) {
+  return contact == FeContact::Held ? "held at the edge" : "frictionless";
+}
+
+// The user's membrane in one of the two limits the finite elements cover.
+Problem limit_problem(const Problem& problem, FeContact contact) {
+  Problem q = problem;
+  q.friction = 0.0;
+  q.stick = {};
+  if (contact == FeContact::Held) q.stick.rule = StickRule::Always;
+  return q;
+}
+
+// How deep the limit goes: its predicted puncture, or the end of its loading curve.
+std::optional<double> depth_range(const Problem& q, std::string& why) {
+  const PuncturePrediction puncture = predict_puncture(q);
+  if (puncture.found) return puncture.depth_mm;
+  const LoadingCurve curve = loading_curve(q);
+  if (!curve.points.empty() && curve.points.back().depth_mm > 0.0) {
+    why = fmt::format("no puncture ({}); up to the end of the loading curve", puncture.message);
+    return curve.points.back().depth_mm;
+  }
+  why = puncture.message;
+  return std::nullopt;
+}
+
+VerificationCheck check(std::string group, std::string quantity, std::string condition,
+                        double shooting, double reference, double tolerance, std::string note) {
+  VerificationCheck c{std::move(group),
+                      std::move(quantity),
+                      std::move(condition),
+                      shooting,
+                      reference,
+                      0.0,
+                      tolerance,
+                      Verdict::Fail,
+                      std::move(note)};
+  c.difference = reference / shooting - 1.0;
+  const bool finite = std::isfinite(shooting) && std::isfinite(reference) && shooting != 0.0;
+  c.verdict = finite && std::abs(c.difference) <= tolerance ? Verdict::Pass : Verdict::Fail;
+  if (!finite) c.difference = 0.0;
+  return c;
+}
+
+VerificationCheck skipped(std::string group, std::string quantity, std::string condition,
+                          std::string why) {
+  return VerificationCheck{std::move(group),
+                           std::move(quantity),
+                           std::move(condition),
+                           0.0,
+                           0.0,
+                           0.0,
+                           0.0,
+                           Verdict::Skipped,
+                           std::move(why)};
+}
+
+// The finite elements' own relative error, estimated from the half mesh for a quantity
+// converging at order `order`: |fine - coarse| / (2^order - 1) / |fine|.
+double estimated_error(double fine, double coarse, int order) {
+  return std::abs(fine - coarse) / (std::pow(2.0, order) - 1.0) / std::abs(fine);
+}
+
+class Checks {
+ public:
+  Checks(const VerifyOptions& options, int total) : options_(options), total_(total) {}
+  void step(std::string_view what) {
+    if (options_.progress) options_.progress(done_, total_, what);
+    ++done_;
+  }
+  std::vector<VerificationCheck> rows;
+
+ private:
+  const VerifyOptions& options_;
+  int total_;
+  int done_ = 0;
+};
+
+// Force, Part III stretch and largest I1 against the finite elements, and the work of the
+// shooting's force against the finite elements' stored energy, in one limit.
+void compare_limit(const Problem& problem, FeContact contact, const VerifyOptions& options,
+                   Checks& checks) {
+  const Problem q = limit_problem(problem, contact);
+  const std::string group = group_of(contact);
+  checks.step(fmt::format("{}: the depth range", group));
+  std::string why;
+  const std::optional<double> range = depth_range(q, why);
+  if (!range) {
+    checks.rows.push_back(skipped(group, "force [N]", "", "no loading curve: " + why));
+    return;
+  }
+  std::vector<double> depths;
+  for (int k = 1; k <= options.depths; ++k) depths.push_back(*range * k / options.depths);
+  FeOptions fine, coarse;
+  fine.elements = options.elements;
+  coarse.elements = std::max(2, options.elements / 2);
+  checks.step(fmt::format("{}: finite elements, {} elements", group, fine.elements));
+  const std::vector<FeState> fe = fe_solve_at_depths(q, depths, contact, fine);
+  checks.step(fmt::format("{}: finite elements, {} elements", group, coarse.elements));
+  const std::vector<FeState> fe_coarse = fe_solve_at_depths(q, depths, contact, coarse);
+  const std::string range_note =
+      why.empty() ? "of the puncture depth" : "of the loading curve's last depth";
+  for (std::size_t k = 0; k < depths.size(); ++k) {
+    const std::string where =
+        fmt::format("depth {:.5g} mm ({}/{} {})", depths[k], k + 1, options.depths, range_note);
+    const Equilibrium e = solve_at_depth(q, depths[k], stage_of(contact));
+    if (!e.ok()) {
+      checks.rows.push_back(skipped(group, "force [N]", where, "shooting: " + e.message));
+      continue;
+    }
+    if (!fe[k].converged || !fe_coarse[k].converged) {
+      // The shooting found an equilibrium the second method cannot reach: a disagreement.
+      VerificationCheck c =
+          skipped(group,
+                  "force [N]",
+                  where,
+                  "no finite-element equilibrium here, where the shooting has one: " +
+                      (fe[k].converged ? fe_coarse[k].message : fe[k].message));
+      c.verdict = Verdict::Fail;
+      c.shooting = e.force_n;
+      c.reference = std::numeric_limits<double>::quiet_NaN();
+      checks.rows.push_back(c);
+      continue;
+    }
+    const double force_error = estimated_error(fe[k].force_n, fe_coarse[k].force_n, 4);
+    checks.rows.push_back(check(
+        group,
+        "force [N]",
+        where,
+        e.force_n,
+        fe[k].force_n,
+        std::max(1e-6, 4.0 * force_error),
+        fmt::format("1e-6, or 4x the elements' error (estimated {:.1e}, order 4)", force_error)));
+    if (contact == FeContact::Frictionless)
+      checks.rows.push_back(check(group,
+                                  "Part III stretch",
+                                  where,
+                                  e.part_three_stretch,
+                                  fe[k].part_three_stretch,
+                                  2e-4,
+                                  "the corner moves with the side's top, located to the "
+                                  "square root of the force's error"));
+    const double i1_error =
+        estimated_error(fe[k].max_first_invariant, fe_coarse[k].max_first_invariant, 2);
+    checks.rows.push_back(
+        check(group,
+              "largest I1",
+              where,
+              e.max_first_invariant,
+              fe[k].max_first_invariant,
+              std::max(3e-3, 4.0 * i1_error),
+              fmt::format("a derivative of the elements: 3e-3, or 4x their error (estimated "
+                          "{:.1e}, order 2)",
+                          i1_error)));
+  }
+  // Work = energy at the deepest point: the integral of the shooting's force over the depth
+  // against the stored energy of the finite elements.  Adaptive Gauss-Kronrod on pieces where
+  // the force is smooth (its curvature jumps where Part II appears); below 1 % of the depth the
+  // force is Foppl's, F ~ delta^3, whose work F(d0) d0 / 4 is ~1e-8 of the total.
+  const FeState& last = fe.back();
+  const FeState& last_coarse = fe_coarse.back();
+  const std::string where = fmt::format("0 to {:.5g} mm", depths.back());
+  if (!last.converged || !last_coarse.converged) return;
+  checks.step(fmt::format("{}: work of the force", group));
+  std::string failure;
+  auto force = [&](double depth) {
+    const Equilibrium e = solve_at_depth(q, depth, stage_of(contact));
+    if (!e.ok() && failure.empty()) failure = e.message;
+    return e.ok() ? e.force_n : 0.0;
+  };
+  std::vector<double> ends{0.01 * depths.back()};
+  if (contact == FeContact::Frictionless) {
+    CurveOptions coarse_curve;
+    coarse_curve.points = 20;
+    const LoadingCurve curve = loading_curve(q, coarse_curve);
+    if (curve.part_two_onset_depth_mm && *curve.part_two_onset_depth_mm > ends.front() &&
+        *curve.part_two_onset_depth_mm < depths.back())
+      ends.push_back(*curve.part_two_onset_depth_mm);
+  }
+  ends.push_back(depths.back());
+  double work = force(ends.front()) * ends.front() / 4.0, quadrature_error = 0.0;
+  for (std::size_t k = 1; k < ends.size(); ++k) {
+    double piece_error = 0.0;
+    work += boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
+        force, ends[k - 1], ends[k], 8, 1e-10, &piece_error);
+    quadrature_error += piece_error;
+  }
+  if (!failure.empty()) {
+    checks.rows.push_back(
+        skipped(group, "work of F = stored energy [N mm]", where, "shooting: " + failure));
+    return;
+  }
+  const double energy_error =
+      estimated_error(last.stored_energy_nmm, last_coarse.stored_energy_nmm, 4);
+  checks.rows.push_back(
+      check(group,
+            "work of F = stored energy [N mm]",
+            where,
+            work,
+            last.stored_energy_nmm,
+            std::max(1e-6, 4.0 * energy_error + quadrature_error / std::abs(work)),
+            fmt::format("1e-6, or 4x the elements' error (estimated {:.1e}) + the quadrature's",
+                        energy_error)));
+}
+
+// F A^2 / (E H delta^3) of the full solver at a small force against the Foppl coefficient.
+void compare_small_deflection(const Problem& problem, Checks& checks) {
+  const double a_over_A = problem.geometry.indenter_radius_mm / problem.geometry.clamp_radius_mm;
+  for (const FeContact contact : {FeContact::Held, FeContact::Frictionless}) {
+    const auto edge =
+        contact == FeContact::Held ? verification::DiscEdge::Held : verification::DiscEdge::Sliding;
+    const std::string quantity = fmt::format("C = F A^2 / (E H delta^3), {} edge",
+                                             contact == FeContact::Held ? "held" : "sliding");
+    checks.step("small deflection: " + quantity);
+    const Problem q = limit_problem(problem, contact);
+    // f = F / (2 pi G H A) = 1e-6 bends the membrane to delta / A ~ 0.01.
+    const double force = 1e-6 * force_scale_n(q);
+    const Equilibrium e = solve_at_force(q, force, stage_of(contact));
+    const std::string where = fmt::format("F = {:.3g} N (F / 2 pi G H A = 1e-6)", force);
+    if (!e.ok()) {
+      checks.rows.push_back(skipped("small deflection", quantity, where, e.message));
+      continue;
+    }
+    double c_foppl = 0.0;
+    try {
+      c_foppl = verification::foppl_coefficient(a_over_A, edge);
+    } catch (const std::exception& x) {
+      checks.rows.push_back(skipped("small deflection", quantity, where, x.what()));
+      continue;
+    }
+    const double big_a = q.geometry.clamp_radius_mm;
+    const double young = 3.0 * q.material.shear_modulus_mpa;  // incompressible: E = 3 G
+    const double c_full =
+        force * big_a * big_a / (young * q.geometry.thickness_mm * std::pow(e.depth_mm, 3));
+    const double strain = std::pow(e.depth_mm / big_a, 2);
+    checks.rows.push_back(check("small deflection",
+                                quantity,
+                                fmt::format("{} (delta = {:.4g} mm)", where, e.depth_mm),
+                                c_full,
+                                c_foppl,
+                                5.0 * strain,
+                                "the next order of the expansion, 5 (delta/A)^2 (measured "
+                                "~2 (delta/A)^2)"));
+  }
+}
+
+}  // namespace
+
+VerificationReport verify(const Problem& problem, const VerifyOptions& options) {
+  validate(problem);
+  if (options.elements < 4 || options.elements > 4096)
+    throw std::invalid_argument(
+        fmt::format("elements: must be in the range 4 to 4096, got {}", options.elements));
+  if (options.depths < 1 || options.depths > 50)
+    throw std::invalid_argument(
+        fmt::format("depths: must be in the range 1 to 50, got {}", options.depths));
+  Checks checks(options, 2 * 5 + 2);
+  for (const FeContact contact : {FeContact::Frictionless, FeContact::Held})
+    compare_limit(problem, contact, options, checks);
+  compare_small_deflection(problem, checks);
+  VerificationReport report;
+  report.checks = std::move(checks.rows);
+  report.elements = options.elements;
+  return report;
+}
+
+bool has_numbers(const VerificationCheck& c) {
+  return c.verdict != Verdict::Skipped && std::isfinite(c.shooting) && std::isfinite(c.reference);
+}
+
+bool VerificationReport::passed() const { return count(Verdict::Fail) == 0; }
+
+int VerificationReport::count(Verdict verdict) const {
+  int n = 0;
+  for (const auto& c : checks) n += c.verdict == verdict;
+  return n;
+}
+
+std::string to_string(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Pass:
+      return "pass";
+    case Verdict::Fail:
+      return "FAIL";
+    case Verdict::Skipped:
+      return "skipped";
+  }
+  return "?";
+}
+
+}  // namespace puncture

@@ -1,0 +1,76 @@
+// `verify` (verification.hpp): passes on the paper's membrane with every check present, and can
+// fail: the paper's printed Part II equation is not the stationarity of the stored energy.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "puncture/verification.hpp"
+
+namespace puncture {
+namespace {
+
+int count_quantity(const VerificationReport& r, const std::string& group,
+                   const std::string& quantity) {
+  int n = 0;
+  for (const auto& c : r.checks) n += c.group == group && c.quantity == quantity;
+  return n;
+}
+
+TEST(Verify, PassesOnThePapersMembraneWithEveryCheck) {
+  VerifyOptions options;
+  options.elements = 64;
+  options.depths = 2;
+  int calls = 0;
+  options.progress = [&](int done, int total, std::string_view) {
+    EXPECT_LT(done, total);
+    ++calls;
+  };
+  const VerificationReport r = verify(Problem{}, options);
+  for (const auto& c : r.checks)
+    EXPECT_EQ(c.verdict, Verdict::Pass) << c.group << " " << c.quantity << " " << c.condition
+                                        << ": " << c.difference << " (" << c.note << ")";
+  EXPECT_TRUE(r.passed());
+  EXPECT_EQ(count_quantity(r, "frictionless", "force [N]"), 2);
+  EXPECT_EQ(count_quantity(r, "frictionless", "Part III stretch"), 2);
+  EXPECT_EQ(count_quantity(r, "held at the edge", "largest I1"), 2);
+  EXPECT_EQ(count_quantity(r, "frictionless", "work of F = stored energy [N mm]"), 1);
+  EXPECT_EQ(count_quantity(r, "held at the edge", "work of F = stored energy [N mm]"), 1);
+  EXPECT_EQ(r.count(Verdict::Pass), int(r.checks.size()));
+  EXPECT_GT(calls, 5);
+}
+
+// With mu' = 0 the printed Eq. (18) keeps s1 constant along Part II, the energy R s1
+// (docs/model.md §4): once the membrane wraps the side the forces differ by percents.
+TEST(Verify, FailsForThePrintedPartTwoEquation) {
+  Problem p;
+  p.part_two_equation = PartTwoEquation::PaperEq18;
+  VerifyOptions options;
+  options.elements = 32;
+  options.depths = 4;
+  const VerificationReport r = verify(p, options);
+  EXPECT_FALSE(r.passed());
+  bool force_failed = false;
+  for (const auto& c : r.checks)
+    if (c.group == "frictionless" && c.quantity == "force [N]" && c.verdict == Verdict::Fail &&
+        has_numbers(c))
+      force_failed = force_failed || std::abs(c.difference) > 1e-2;
+  EXPECT_TRUE(force_failed);
+  // The held membrane never touches the side: Eq. (18) plays no part, those checks pass.
+  for (const auto& c : r.checks)
+    if (c.group == "held at the edge") EXPECT_EQ(c.verdict, Verdict::Pass) << c.quantity;
+}
+
+TEST(Verify, RejectsInvalidOptions) {
+  VerifyOptions few;
+  few.elements = 2;
+  EXPECT_THROW(verify(Problem{}, few), std::invalid_argument);
+  VerifyOptions none;
+  none.depths = 0;
+  EXPECT_THROW(verify(Problem{}, none), std::invalid_argument);
+  Problem bad;
+  bad.geometry.thickness_mm = -1.0;
+  EXPECT_THROW(verify(bad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace puncture
