@@ -16,6 +16,12 @@ uniaxial_points_from_csv), and puncture_band, the puncture force over the parame
 
     band = puncture.puncture_band(problem, critical_i1=puncture.plus_minus(95.2, 4.8))
 
+The inflation (bulge) test of the same membrane under a uniform pressure: inflation_curve (from
+flat to the burst, with the pressure's limit point), inflate_at_pole_stretch and
+inflate_at_pressure (every state at a pressure: the pressure is not monotone):
+
+    curve = puncture.inflation_curve(puncture.InflationProblem(clamp_radius_mm=30))
+
 Invalid input raises ValueError naming the attribute and its allowed range; a solve that does
 not converge raises SolverError (a RuntimeError) with .status and .message.
 """
@@ -142,6 +148,39 @@ __all__ = [
     "stick_slip_boundary",
     "uniaxial_points",
     "uniaxial_points_from_csv",
+]
+
+# The inflation (bulge) test.
+from ._puncture import (  # noqa: E402
+    ExtremumKind,
+    InflationAtPressure,
+    InflationBurst,
+    InflationCurve,
+    InflationFields,
+    InflationProblem,
+    InflationState,
+    PressureExtremum,
+    inflate_at_pole_stretch,
+    inflate_at_pressure,
+    inflation_burst,
+    inflation_curve,
+    pressure_extrema,
+)
+
+__all__ += [
+    "ExtremumKind",
+    "InflationAtPressure",
+    "InflationBurst",
+    "InflationCurve",
+    "InflationFields",
+    "InflationProblem",
+    "InflationState",
+    "PressureExtremum",
+    "inflate_at_pole_stretch",
+    "inflate_at_pressure",
+    "inflation_burst",
+    "inflation_curve",
+    "pressure_extrema",
 ]
 
 # Shown as puncture.Problem, puncture.SolverError, ... rather than puncture._puncture.*.

@@ -9,6 +9,8 @@ matplotlib Figure.
     profile(states, path)         deformed profiles, Parts I-III coloured, indenter to scale
     stretch_fields(state, path)   lambda1, lambda2 and I1 along the reference radius
     state_overview(state, path)   profile and fields of one state on one page
+    inflation_curve(curve, path)  inflation test: pressure against pole stretch and volume,
+                                  the limit point(s) and the burst marked
 
 This module needs numpy and matplotlib only, not the compiled extension, so that the CLI's
 --plot can use it on its JSON output.
@@ -22,7 +24,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
-__all__ = ["loading_curve", "profile", "stretch_fields", "state_overview", "save", "STYLE"]
+__all__ = ["loading_curve", "profile", "stretch_fields", "state_overview", "inflation_curve",
+           "save", "STYLE"]
 
 # Colours of the membrane's parts, and of the loading stages (light, for shaded backgrounds).
 PART_COLOURS = {1: "#1f77b4", 2: "#d95f02", 3: "#1b9e77"}
@@ -567,4 +570,126 @@ def state_overview(state, path=None, *, title=None):
                      else f"Equilibrium at {s.label()} "
                      f"({CONFIGURATION_NAMES.get(s.configuration, s.configuration)})\n"
                      f"{_describe(s.info)}")
+    return _finish(fig, path)
+
+
+# --- the inflation (bulge) test --------------------------------------------------------------
+
+
+class _InflationCurve:
+    """An inflation curve from the bindings (InflationCurve) or from `puncture inflate --format
+    json`: the columns, the extrema and the burst."""
+
+    def __init__(self, obj):
+        if isinstance(obj, dict):
+            c = obj["curve"]
+            points = c["points"]
+            self.stretch = np.array([p["pole_stretch"] for p in points], dtype=float)
+            self.pressure = np.array([p["pressure_mpa"] for p in points], dtype=float)
+            self.volume = np.array([p["volume_mm3"] for p in points], dtype=float)
+            self.extrema = [(e["kind"], e["pole_stretch"], e["pressure_mpa"], e["volume_mm3"])
+                            for e in c["extrema"]]
+            b = c["burst"]
+            self.burst = ((b["pole_stretch"], b["pressure_mpa"], b["volume_mm3"])
+                          if b["found"] else None)
+            i = obj.get("inputs", {})
+            m = i.get("material", {})
+            law = m.get("law", "")
+            if "j_lim" in m:
+                law += f" (J_lim = {m['j_lim']:g})"
+            elif "alpha" in m:
+                law += f" (alpha = {m['alpha']:g})"
+            self.info = {"clamp_radius_mm": i.get("clamp_radius_mm"),
+                         "thickness_mm": i.get("thickness_mm"),
+                         "material": f"{law}, G = {m.get('shear_modulus_mpa', 0):g} MPa",
+                         "critical_i1": i.get("critical_i1"),
+                         "pressure_scale_mpa": i.get("pressure_scale_mpa")}
+        else:
+            self.stretch = np.asarray(obj.pole_stretch, dtype=float)
+            self.pressure = np.asarray(obj.pressure_mpa, dtype=float)
+            self.volume = np.asarray(obj.volume_mm3, dtype=float)
+            self.extrema = [(_token(e.kind), e.state.pole_stretch, e.state.pressure_mpa,
+                             e.state.volume_mm3) for e in obj.extrema]
+            b = obj.burst
+            self.burst = ((b.state.pole_stretch, b.state.pressure_mpa, b.state.volume_mm3)
+                          if b.found else None)
+            p = getattr(obj, "problem", None)
+            self.info = {} if p is None else {
+                "clamp_radius_mm": p.clamp_radius_mm,
+                "thickness_mm": p.thickness_mm,
+                "material": p.material.description,
+                "critical_i1": p.critical_i1,
+                "pressure_scale_mpa": p.pressure_scale_mpa(),
+            }
+        if self.burst is not None and self.burst[0] > self.stretch[-1] * (1 + 1e-12):
+            self.burst = None  # beyond the end of the curve
+
+
+def _inflation_title(info):
+    if not info or info.get("clamp_radius_mm") is None:
+        return ""
+    return (f"A = {info['clamp_radius_mm']:g} mm, H = {info['thickness_mm']:g} mm, "
+            f"{info['material']}, critical I1 = {info['critical_i1']:g}")
+
+
+def draw_inflation_curve(ax, curve, x="pole_stretch"):
+    """Draws pressure against pole stretch (x='pole_stretch') or volume (x='volume') on `ax`,
+    with the pressure's extrema and the burst marked; returns the legend handles."""
+    c = curve if isinstance(curve, _InflationCurve) else _InflationCurve(curve)
+    by_volume = x == "volume"
+    xs = c.volume / 1e3 if by_volume else c.stretch
+    (line,) = ax.plot(xs, c.pressure * 1e3, color="black", lw=1.8, zorder=3,
+                      label="model: pressure p")
+    handles = [line]
+    seen = set()
+    for kind, stretch, pressure, volume in c.extrema:
+        maximum = kind == "maximum"
+        label = ("pressure maximum (limit point)" if maximum else "pressure minimum")
+        (mark,) = ax.plot([volume / 1e3 if by_volume else stretch], [pressure * 1e3],
+                          "o" if maximum else "s", color="#1f77b4" if maximum else "#1b9e77",
+                          ms=8, mec="white", mew=0.8, zorder=5,
+                          label=label if kind not in seen else None)
+        if kind not in seen:
+            handles.append(mark)
+            seen.add(kind)
+        if not by_volume:
+            ax.annotate(f"{'max' if maximum else 'min'} {pressure * 1e3:.4g} kPa\n"
+                        f"at λ0 = {stretch:.4g}",
+                        (stretch, pressure * 1e3), xytext=(0, 10 if maximum else -12),
+                        textcoords="offset points", ha="center",
+                        va="bottom" if maximum else "top", fontsize=9, zorder=6)
+    if c.burst is not None:
+        stretch, pressure, volume = c.burst
+        (mark,) = ax.plot([volume / 1e3 if by_volume else stretch], [pressure * 1e3], "X",
+                          color=CRITICAL_COLOUR, ms=10, mec="white", mew=0.8, zorder=5,
+                          label="burst (largest I1 = critical I1)")
+        handles.append(mark)
+    ax.set_xlabel("enclosed volume V [cm³]" if by_volume else "pole stretch λ0")
+    ax.set_ylabel("pressure p [kPa]")
+    ax.set_xlim(0 if by_volume else 1, xs[-1] * 1.02)
+    ax.set_ylim(0, max(c.pressure.max() * 1e3, 1e-12) * 1.25)
+    return handles
+
+
+def inflation_curve(curve, path=None, *, title=None):
+    """The inflation (bulge) test: pressure against pole stretch (left) and against the
+    enclosed volume (right), with the pressure's maximum (limit point) and minimum and the burst
+    marked.  `curve`: puncture.inflation_curve(...) or `puncture inflate --format json`."""
+    _check_path(path)
+    c = _InflationCurve(curve)
+    with matplotlib.rc_context(STYLE):
+        fig = Figure(figsize=(11.0, 4.8), layout="constrained")
+        left, right = fig.subplots(1, 2)
+        handles = draw_inflation_curve(left, c)
+        draw_inflation_curve(right, c, x="volume")
+        scale = c.info.get("pressure_scale_mpa")
+        if scale:
+            kpa = scale * 1e3
+            left.secondary_yaxis("right", functions=(lambda p: p / kpa, lambda n: n * kpa)
+                                 ).set_ylabel("normalised pressure p A / (G H)")
+        left.legend(handles=handles, loc="lower right", framealpha=0.9)
+        left.set_title("pressure against the pole's stretch")
+        right.set_title("pressure against the enclosed volume")
+        fig.suptitle(title if title is not None
+                     else "Inflation (bulge) test\n" + _inflation_title(c.info))
     return _finish(fig, path)
