@@ -308,9 +308,9 @@ StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState&
 
 // One continuation step to depth s.depth: the layout of the previous state, switched when the
 // solution leaves it (the free part entering the indenter, or the side contact vanishing).
-StepResult solve_step(const Problem& problem, Layout& layout, const Scaled& s,
-                      const FeState* previous, FeContact contact, const FeOptions& options,
-                      bool precise) {
+StepResult solve_step_in_layout(const Problem& problem, Layout& layout, const Scaled& s,
+                                const FeState* previous, FeContact contact,
+                                const FeOptions& options, bool precise) {
   if (layout == Layout::Held) {
     StepResult step = solve_layout(problem, layout, s, previous, contact, options);
     if (step.converged && corner_radial_slope(step.state) < 0.0) {
@@ -337,6 +337,28 @@ StepResult solve_step(const Problem& problem, Layout& layout, const Scaled& s,
     return plain;
   }
   return wrapped;
+}
+
+// Nodes of the free part inside the indenter (r < a) by more than the elements' own error
+// where the membrane leaves the side (a dip of O(h^2) relative): the answer is not admissible.
+bool crosses_side(const FeState& state, double indenter_radius_mm) {
+  for (const FePart& part : state.parts)
+    if (part.part == 1)
+      for (double r : part.radius_mm)
+        if (r < indenter_radius_mm * (1.0 - 1e-3)) return true;
+  return false;
+}
+
+StepResult solve_step(const Problem& problem, Layout& layout, const Scaled& s,
+                      const FeState* previous, FeContact contact, const FeOptions& options,
+                      bool precise) {
+  StepResult step = solve_step_in_layout(problem, layout, s, previous, contact, options, precise);
+  if (step.converged && crosses_side(step.state, problem.geometry.indenter_radius_mm)) {
+    step.converged = false;
+    step.message =
+        "the free membrane crosses the indenter's side (too few elements for this state?)";
+  }
+  return step;
 }
 
 void check_options(const FeOptions& options) {
@@ -392,7 +414,8 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
         const double lock = max_first_invariant(problem.material.law);
         if (previous && std::isfinite(lock))
           failure += fmt::format(" (largest I1 there {:.4g}; the material locks at {:.4g})",
-                                 previous->max_first_invariant, lock);
+                                 previous->max_first_invariant,
+                                 lock);
       } else {
         step *= 0.5;
       }
