@@ -449,12 +449,16 @@ ScaledSolution ForceSolver<Law>::stick(double f) const {
     return residual(Configuration::Stick, f, l1);
   };
   // Lowest edge stretch: Part I leaves the edge vertically (R s1 = f).
-  const auto l1_vertical = invert_radial_stress(law_, f / s_.a, 1.0);
+  auto l1_vertical = invert_radial_stress(law_, f / s_.a, 1.0);
   if (!l1_vertical) {
     sol.status = Status::BeyondLocking;
     sol.message = "the force exceeds what the membrane at the indenter's edge can carry";
     return sol;
   }
+  // At tiny forces s1 ~ lambda1 - 1 loses its digits to cancellation and the inverse may fall
+  // an ulp short of carrying the force (then start() rejects the vertical exit): step up by ulps.
+  for (int k = 0; k < 1000 && s_.a * membrane_stress(law_, *l1_vertical, 1.0).s1 < f; ++k)
+    *l1_vertical = std::nextafter(*l1_vertical, 2.0 * *l1_vertical);
   const double g0 = g(*l1_vertical).value_or(kBeyondDomain);
   if (g0 >= 0.0) {
     sol.status = Status::StickWrapsSide;
