@@ -5,10 +5,14 @@
 //   BM_EquilibriumAtDepth  one equilibrium at a prescribed depth (nested bracketing)
 //   BM_PunctureDefault     the puncture point alone
 //   BM_LoadingCurveDefault the loading curve, 200 depth points from zero to puncture
+//   BM_FiniteElements...   the second method (finite_element.hpp), 128 quadratic elements:
+//                          held at 20 mm (a plain minimisation, continuation from flat) and
+//                          frictionless at 20 mm (side wrapped: the departure is searched)
 // Compare them as ratios to the baseline: the machines are noisy, the ratios much less so.
 #include <benchmark/benchmark.h>
 
 #include "force_solver.hpp"
+#include "puncture/finite_element.hpp"
 #include "puncture/loading_curve.hpp"
 #include "scaled_problem.hpp"
 
@@ -60,6 +64,21 @@ void BM_LoadingCurveDefault(benchmark::State& state) {
   state.counters["points"] = static_cast<double>(points);
 }
 BENCHMARK(BM_LoadingCurveDefault)->Unit(benchmark::kMillisecond);
+
+void BM_FiniteElementsHeld(benchmark::State& state) {
+  Problem problem;
+  problem.stick.rule = StickRule::Always;
+  for (auto _ : state) benchmark::DoNotOptimize(fe_solve_at_depth(problem, 20.0, FeContact::Held));
+}
+BENCHMARK(BM_FiniteElementsHeld)->Unit(benchmark::kMillisecond);
+
+void BM_FiniteElementsFrictionless(benchmark::State& state) {
+  Problem problem;
+  problem.friction = 0.0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(fe_solve_at_depth(problem, 20.0, FeContact::Frictionless));
+}
+BENCHMARK(BM_FiniteElementsFrictionless)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
