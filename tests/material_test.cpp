@@ -116,5 +116,31 @@ TEST(NeoHookeanClosedForm, EquibiaxialStress) {
     EXPECT_NEAR(equibiaxial_stress(NeoHookean{}, l), l - std::pow(l, -5.0), 1e-12 * l);
 }
 
+// Uniaxial (lambda2 = lambda3 = l^-1/2) and equibiaxial (lambda1 = lambda2 = l) nominal stresses
+// of every law in closed form, P = 2 (dW/dI1 + ...) dI/dl written out by hand:
+//   neo-Hookean   uni  l - l^-2                 equi  l - l^-5
+//   Gent          uni  (l - l^-2) / (1 - (l^2 + 2/l - 3) / J)
+//                 equi (l - l^-5) / (1 - (2 l^2 + l^-4 - 3) / J)
+//   Mooney-Rivlin uni  (l - l^-2) (1 - alpha + alpha / l)
+//                 equi (l - l^-5) (1 - alpha + alpha l^2)
+// The library computes them through membrane_stress (general invariant derivatives): agreement to
+// rounding, 1e-12 relative.
+TEST(ClosedForms, UniaxialAndEquibiaxialStressOfEveryLaw) {
+  const double j = 125.0, alpha = 0.2;
+  for (double l : {1.05, 1.5, 3.0, 6.0}) {
+    const double uni = l - std::pow(l, -2.0), equi = l - std::pow(l, -5.0);
+    const double tol = 1e-12 * std::max(1.0, equi);
+    EXPECT_NEAR(uniaxial_stress(NeoHookean{}, l), uni, tol);
+    EXPECT_NEAR(uniaxial_stress(Gent{j}, l), uni / (1.0 - (l * l + 2.0 / l - 3.0) / j), tol * 10.0);
+    EXPECT_NEAR(equibiaxial_stress(Gent{j}, l),
+                equi / (1.0 - (2.0 * l * l + std::pow(l, -4.0) - 3.0) / j),
+                tol * 10.0);
+    EXPECT_NEAR(uniaxial_stress(MooneyRivlin{alpha}, l), uni * (1.0 - alpha + alpha / l), tol);
+    EXPECT_NEAR(equibiaxial_stress(MooneyRivlin{alpha}, l),
+                equi * (1.0 - alpha + alpha * l * l),
+                tol * l * l);
+  }
+}
+
 }  // namespace
 }  // namespace puncture
