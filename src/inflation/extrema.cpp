@@ -92,6 +92,31 @@ double second_derivative(PressureOfStretch& pressure, double l0, double h) {
   return (*a - 2.0 * *b + *c) / (h * h);
 }
 
+// The same from pole stretches at or below l0 only, for the end of the range (which may lie
+// just below the locking stretch): the five-point backward difference of dP/dl0 (error
+// ~ h^4 P^(5) / 5) and the four-point one of d2P/dl0^2 (error ~ h^2 P^(4) 11 / 12).
+double backward_slope(PressureOfStretch& pressure, double l0, double h) {
+  constexpr double weights[5] = {25.0, -48.0, 36.0, -16.0, 3.0};
+  double sum = 0.0;
+  for (int k = 0; k < 5; ++k) {
+    const auto v = pressure(l0 - k * h);
+    if (!v) throw FailedSolve{pressure.failure()};
+    sum += weights[k] * *v;
+  }
+  return sum / (12.0 * h);
+}
+
+double backward_second_derivative(PressureOfStretch& pressure, double l0, double h) {
+  constexpr double weights[4] = {2.0, -5.0, 4.0, -1.0};
+  double sum = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const auto v = pressure(l0 - k * h);
+    if (!v) throw FailedSolve{pressure.failure()};
+    sum += weights[k] * *v;
+  }
+  return sum / (h * h);
+}
+
 }  // namespace
 
 }  // namespace detail
@@ -163,6 +188,38 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
         return out;
       }
       out.extrema.push_back(std::move(e));
+    }
+    // An extremum inside the last interval, [l[n-1], l[n]], changes no sign of the scanned
+    // differences when the pressure at the end is still on the same side as at l[n-1] (a
+    // maximum just before the end): the slope at the end shows it.  Backward differences
+    // throughout this interval, so that nothing beyond the range's end is solved; their error
+    // is six times the central difference's at the same step, so the step is a quarter of the
+    // central one (the error then 40 times smaller; the solves' 1e-12 noise, amplified by
+    // ~10 / h, stays far below it).
+    const double last = p[n] - p[n - 1];
+    const double h = 0.25 * std::min(0.25 * (l[n] - l[n - 1]), 0.2 * (l[n - 1] - 1.0));
+    auto d = [&](double x) { return detail::backward_slope(pressure, x, h); };
+    if (double d_hi = d(l[n]); last * d_hi < 0.0) {
+      double lo = l[n - 1], hi = l[n];
+      double d_lo = d(lo);
+      if (d_lo * d_hi < 0.0) {  // else two extrema within the interval cancelled out
+        std::uintmax_t iterations = 60;
+        const auto bracket = boost::math::tools::toms748_solve(
+            d, lo, hi, d_lo, d_hi, boost::math::tools::eps_tolerance<double>(40), iterations);
+        const double at = 0.5 * (bracket.first + bracket.second);
+        PressureExtremum e;
+        e.kind = last > 0.0 ? ExtremumKind::Maximum : ExtremumKind::Minimum;
+        e.pressure_slope_mpa = scale * d(at);
+        e.curvature_mpa = scale * detail::backward_second_derivative(pressure, at, h);
+        e.state = detail::to_physical(problem, detail::solve_inflation(law, at, options, p[n]));
+        if (!e.state.ok()) {
+          out.status = e.state.status;
+          out.message = fmt::format(
+              "the extremum at pole stretch {:g} could not be solved: {}", at, e.state.message);
+          return out;
+        }
+        out.extrema.push_back(std::move(e));
+      }
     }
   } catch (const detail::FailedSolve& f) {
     out.status = f.solution.status;

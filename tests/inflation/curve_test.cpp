@@ -122,5 +122,32 @@ TEST(InflationAtPressure, AgreesWithTheCurve) {
   EXPECT_NEAR(at.states[0].volume_mm3 / s.volume_mm3, 1.0, 1e-8);
 }
 
+TEST(InflationAtPressure, FindsTheSecondStateBeyondAMaximumInTheLastScanInterval) {
+  // Gent (J_lim = 125) up to pole stretch 2.4 with a coarse scan (8 stretches): the maximum
+  // lies between the last scanned stretch (2.225) and the end, where the pressure has fallen
+  // a little.  A pressure between the end's and the maximum's is carried twice in the range.
+  const auto p = membrane(Gent{125.0});
+  const InflationCurveOptions range{.max_pole_stretch = 2.4, .scan_points = 8};
+  const auto fine = pressure_extrema(p, 3.0);  // the maximum, with the default scan
+  ASSERT_TRUE(fine.ok()) << fine.message;
+  ASSERT_FALSE(fine.extrema.empty());
+  const auto& max = fine.extrema.front().state;
+  ASSERT_GT(max.pole_stretch, 1.0 + 1.4 * 7.0 / 8.0);  // inside the last scan interval
+  ASSERT_LT(max.pole_stretch, range.max_pole_stretch);
+  const auto at_end = solved(p, range.max_pole_stretch);
+  ASSERT_LT(at_end.pressure_mpa, max.pressure_mpa);
+  const double target = 0.5 * (at_end.pressure_mpa + max.pressure_mpa);
+
+  const auto at = inflate_at_pressure(p, target, range);
+  ASSERT_TRUE(at.ok()) << at.message;
+  ASSERT_EQ(at.states.size(), 2u) << at.message;
+  // TOMS 748 on the pole stretch to ~1e-13; the pressure is then right to ~1e-12 (where the
+  // curve is flat, near the maximum, even better).
+  for (const auto& s : at.states) EXPECT_NEAR(s.pressure_mpa / target, 1.0, 1e-9);
+  EXPECT_LT(at.states[0].pole_stretch, max.pole_stretch);
+  EXPECT_GT(at.states[1].pole_stretch, max.pole_stretch);
+  EXPECT_LE(at.states[1].pole_stretch, range.max_pole_stretch);
+}
+
 }  // namespace
 }  // namespace puncture

@@ -88,5 +88,35 @@ TEST(InflationLimitPoint, GentStiffensAgainAfterItsMaximum) {
   }
 }
 
+TEST(InflationLimitPoint, AMaximumInsideTheLastScanIntervalIsFound) {
+  // The paper's Gent (J_lim = 125) up to pole stretch 2.4 with a coarse scan of 8 stretches
+  // (step 0.175): its maximum lies between the last two scanned stretches, 2.225 and 2.4, and
+  // the pressure at 2.4 is still above the one at 2.225, so the scanned pressures rise
+  // monotonically and only the slope at the end of the range shows the maximum.
+  const auto p = membrane(Gent{125.0});
+  const double end = 2.4;
+  const int scan = 8;
+  const double last_scanned = 1.0 + (end - 1.0) * (scan - 1) / scan;
+  // The reference: the same maximum located with the default, fine scan of a longer range,
+  // where it lies well inside.
+  const auto reference = only_maximum(p, 3.0);
+  ASSERT_GT(reference.state.pole_stretch, last_scanned);
+  ASSERT_LT(reference.state.pole_stretch, end);
+  ASSERT_GT(solved(p, end).pressure_mpa, solved(p, last_scanned).pressure_mpa);
+
+  const auto coarse = pressure_extrema(p, end, scan);
+  ASSERT_TRUE(coarse.ok()) << coarse.message;
+  ASSERT_EQ(coarse.extrema.size(), 1u);
+  const auto& max = coarse.extrema.front();
+  EXPECT_EQ(max.kind, ExtremumKind::Maximum);
+  EXPECT_LT(max.curvature_mpa, 0.0);
+  // Both are roots of a difference approximation of dp/dl0: the reference's central one with h
+  // = 0.0083 (error ~ h^4 P^(5) / 30), the coarse scan's backward one in its last interval
+  // with h = 0.011 (error ~ h^4 P^(5) / 5).  With h^4 ~ 1e-8 and P^(5) / P'' of order 10 to
+  // 100, each root is off by ~1e-7 at most in pole stretch: 1e-6 leaves a margin.
+  EXPECT_NEAR(max.state.pole_stretch, reference.state.pole_stretch, 1e-6);
+  EXPECT_NEAR(max.state.pressure_mpa / reference.state.pressure_mpa, 1.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace puncture
