@@ -12,4 +12,5 @@ PYBIND11_MODULE(_puncture, m) {
   puncture::python::bind_solve(m);
   puncture::python::bind_calibration(m);
   puncture::python::bind_inflation(m);
+  puncture::python::bind_verification(m);
 }

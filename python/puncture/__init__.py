@@ -22,6 +22,13 @@ inflate_at_pressure (every state at a pressure: the pressure is not monotone):
 
     curve = puncture.inflation_curve(puncture.InflationProblem(clamp_radius_mm=30))
 
+Why to trust the numbers: verify(problem) runs the checks of `puncture verify` (a second
+solver, finite elements minimising the stored energy, fe_solve_at_depths; work = energy; the
+small-deflection limit) and returns them with verdicts:
+
+    report = puncture.verify(problem)
+    assert report.passed
+
 Invalid input raises ValueError naming the attribute and its allowed range; a solve that does
 not converge raises SolverError (a RuntimeError) with .status and .message.
 """
@@ -181,6 +188,29 @@ __all__ += [
     "inflation_burst",
     "inflation_curve",
     "pressure_extrema",
+]
+
+# The second method (finite elements) and the cross-checks of `puncture verify`.
+from ._puncture import (  # noqa: E402
+    FeContact,
+    FePart,
+    FeState,
+    VerificationCheck,
+    VerificationReport,
+    Verdict,
+    fe_solve_at_depths,
+    verify,
+)
+
+__all__ += [
+    "FeContact",
+    "FePart",
+    "FeState",
+    "VerificationCheck",
+    "VerificationReport",
+    "Verdict",
+    "fe_solve_at_depths",
+    "verify",
 ]
 
 # Shown as puncture.Problem, puncture.SolverError, ... rather than puncture._puncture.*.

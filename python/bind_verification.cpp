@@ -1,0 +1,157 @@
+// The second method and the cross-checks (finite_element.hpp, verification.hpp): the finite
+// elements at a list of depths, and `verify`, the table of `puncture verify`.  Invalid input
+// raises ValueError with the library's message.  The GIL is released while the C++ code runs.
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "bindings.hpp"
+#include "puncture/finite_element.hpp"
+#include "puncture/verification.hpp"
+
+namespace puncture::python {
+
+namespace {
+
+void check_problem(const Problem& problem) {
+  if (const auto message = invalid_input_message(problem); !message.empty())
+    throw py::value_error(message);
+}
+
+std::optional<double> number_of(const VerificationCheck& c, double value) {
+  return has_numbers(c) ? std::optional<double>(value) : std::nullopt;
+}
+
+}  // namespace
+
+void bind_verification(py::module_& m) {
+  py::enum_<FeContact>(m, "FeContact", "Contact the finite elements model")
+      .value("Frictionless", FeContact::Frictionless, "sliding freely over tip, corner and side")
+      .value("Held", FeContact::Held, "held at the indenter's edge (the stick stage)");
+  py::enum_<Verdict>(m, "Verdict")
+      .value("Pass", Verdict::Pass)
+      .value("Fail", Verdict::Fail)
+      .value("Skipped", Verdict::Skipped);
+
+  py::class_<FePart>(m, "FePart", "One part of the meridian as the elements represent it")
+      .def_readonly("part", &FePart::part, "1 free, 2 on the indenter's side, 3 under the tip")
+      .def_readonly("start_radius_mm", &FePart::start_radius_mm)
+      .def_readonly("end_radius_mm", &FePart::end_radius_mm)
+      .def_readonly("logarithmic", &FePart::logarithmic)
+      .def_readonly("elements", &FePart::elements)
+      .def_property_readonly(
+          "radius_mm",
+          [](py::object self) { return view(self.cast<const FePart&>().radius_mm, self); },
+          "current radius r at the nodes [mm]")
+      .def_property_readonly(
+          "deflection_mm",
+          [](py::object self) { return view(self.cast<const FePart&>().deflection_mm, self); },
+          "deflection z at the nodes [mm]");
+
+  py::class_<FeState>(m, "FeState", "A finite-element equilibrium at a prescribed depth")
+      .def_readonly("converged", &FeState::converged)
+      .def_readonly("message", &FeState::message)
+      .def_readonly("contact", &FeState::contact)
+      .def_readonly("order", &FeState::order)
+      .def_readonly("depth_mm", &FeState::depth_mm)
+      .def_readonly("force_n", &FeState::force_n)
+      .def_readonly("normalized_force", &FeState::normalized_force)
+      .def_readonly("stored_energy_nmm", &FeState::stored_energy_nmm, "elastic energy [N mm]")
+      .def_readonly("part_two", &FeState::part_two, "the membrane wraps the indenter's side")
+      .def_readonly("part_three_stretch", &FeState::part_three_stretch)
+      .def_readonly("corner_reference_radius_mm", &FeState::corner_reference_radius_mm)
+      .def_readonly("part_two_top_reference_radius_mm", &FeState::part_two_top_reference_radius_mm)
+      .def_readonly("max_first_invariant", &FeState::max_first_invariant)
+      .def_readonly("unknowns", &FeState::unknowns)
+      .def_readonly("parts", &FeState::parts)
+      .def(
+          "first_invariant",
+          [](const FeState& s, int part, double reference_radius_mm) {
+            return fe_first_invariant(s, part, reference_radius_mm);
+          },
+          py::arg("part"),
+          py::arg("reference_radius_mm"),
+          "I1 at reference radius R [mm] inside part 1, 2 or 3; None outside it");
+
+  m.def(
+      "fe_solve_at_depths",
+      [](const Problem& problem,
+         const std::vector<double>& depths_mm,
+         FeContact contact,
+         int elements,
+         int order) {
+        check_problem(problem);
+        FeOptions options;
+        options.elements = elements;
+        options.order = order;
+        try {
+          py::gil_scoped_release release;
+          return fe_solve_at_depths(problem, depths_mm, contact, options);
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(e.what());
+        }
+      },
+      py::arg("problem"),
+      py::arg("depths_mm"),
+      py::arg("contact") = FeContact::Frictionless,
+      py::arg("elements") = 64,
+      py::arg("order") = 2,
+      "The second method: finite elements minimising the stored energy at increasing depths\n"
+      "[mm], by continuation from the flat membrane.  Frictionless or held contact only\n"
+      "(problem.friction and problem.stick are not used).  A list of FeState; one that did not\n"
+      "converge says why in .message.");
+
+  py::class_<VerificationCheck>(m, "VerificationCheck", "One row of `puncture verify`")
+      .def_readonly("group", &VerificationCheck::group)
+      .def_readonly("quantity", &VerificationCheck::quantity)
+      .def_readonly("condition", &VerificationCheck::condition)
+      .def_property_readonly("shooting",
+                             [](const VerificationCheck& c) { return number_of(c, c.shooting); })
+      .def_property_readonly("second_method",
+                             [](const VerificationCheck& c) { return number_of(c, c.reference); })
+      .def_property_readonly("relative_difference",
+                             [](const VerificationCheck& c) { return number_of(c, c.difference); })
+      .def_property_readonly("tolerance",
+                             [](const VerificationCheck& c) { return number_of(c, c.tolerance); })
+      .def_readonly("verdict", &VerificationCheck::verdict)
+      .def_readonly("note", &VerificationCheck::note)
+      .def("__repr__", [](const VerificationCheck& c) {
+        return fmt::format("<VerificationCheck {} | {} | {}: {}>",
+                           c.group,
+                           c.quantity,
+                           c.condition,
+                           to_string(c.verdict));
+      });
+
+  py::class_<VerificationReport>(m, "VerificationReport")
+      .def_readonly("checks", &VerificationReport::checks)
+      .def_readonly("elements", &VerificationReport::elements)
+      .def_property_readonly("passed", &VerificationReport::passed)
+      .def("count", &VerificationReport::count, py::arg("verdict"));
+
+  m.def(
+      "verify",
+      [](const Problem& problem, int elements, int depths) {
+        check_problem(problem);
+        VerifyOptions options;
+        options.elements = elements;
+        options.depths = depths;
+        try {
+          py::gil_scoped_release release;
+          return verify(problem, options);
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(e.what());
+        }
+      },
+      py::arg("problem"),
+      py::arg("elements") = 128,
+      py::arg("depths") = 4,
+      "The checks of `puncture verify` for this membrane: the finite elements at mu' = 0 and\n"
+      "held, work = stored energy, and the Foppl limit.  A VerificationReport: .checks,\n"
+      ".passed.  Takes seconds.");
+}
+
+}  // namespace puncture::python
