@@ -6,9 +6,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "membrane_validation.hpp"
+
 namespace puncture {
 
-namespace {
+namespace detail {
 
 void require_positive(std::vector<std::string>& errors, const char* name, double value,
                       const char* unit) {
@@ -16,11 +18,37 @@ void require_positive(std::vector<std::string>& errors, const char* name, double
     errors.push_back(fmt::format("{} must be a finite number > 0 {}, got {}", name, unit, value));
 }
 
-}  // namespace
+void append_material_errors(std::vector<std::string>& errors, const Material& material) {
+  require_positive(errors, "shear modulus", material.shear_modulus_mpa, "MPa");
+  if (const auto* gent = std::get_if<Gent>(&material.law)) {
+    if (!std::isfinite(gent->j_lim) || gent->j_lim <= 0.0)
+      errors.push_back(fmt::format("J_lim must be a finite number > 0, got {}", gent->j_lim));
+  }
+  if (const auto* mr = std::get_if<MooneyRivlin>(&material.law)) {
+    if (!std::isfinite(mr->alpha) || mr->alpha < 0.0 || mr->alpha >= 1.0)
+      errors.push_back(
+          fmt::format("Mooney-Rivlin alpha = C2/(C1+C2) must be in [0, 1), got {}", mr->alpha));
+  }
+}
+
+void append_critical_i1_errors(std::vector<std::string>& errors, double critical_i1,
+                               const MaterialLaw& law) {
+  const double i1_max = max_first_invariant(law);
+  if (!std::isfinite(critical_i1) || critical_i1 <= 3.0)
+    errors.push_back(fmt::format("critical I1 must be a finite number > 3, got {}", critical_i1));
+  else if (critical_i1 >= i1_max)
+    errors.push_back(
+        fmt::format("critical I1 must be below the Gent locking limit 3 + J_lim = {:g}, got {:g}",
+                    i1_max,
+                    critical_i1));
+}
+
+}  // namespace detail
 
 std::vector<std::string> validation_errors(const Problem& p) {
   std::vector<std::string> errors;
   const auto& g = p.geometry;
+  using detail::require_positive;
   require_positive(errors, "clamp radius", g.clamp_radius_mm, "mm");
   require_positive(errors, "indenter radius", g.indenter_radius_mm, "mm");
   require_positive(errors, "thickness", g.thickness_mm, "mm");
@@ -31,16 +59,7 @@ std::vector<std::string> validation_errors(const Problem& p) {
         fmt::format("indenter radius must be smaller than the clamp radius ({} mm), got {} mm",
                     g.clamp_radius_mm,
                     g.indenter_radius_mm));
-  require_positive(errors, "shear modulus", p.material.shear_modulus_mpa, "MPa");
-  if (const auto* gent = std::get_if<Gent>(&p.material.law)) {
-    if (!std::isfinite(gent->j_lim) || gent->j_lim <= 0.0)
-      errors.push_back(fmt::format("J_lim must be a finite number > 0, got {}", gent->j_lim));
-  }
-  if (const auto* mr = std::get_if<MooneyRivlin>(&p.material.law)) {
-    if (!std::isfinite(mr->alpha) || mr->alpha < 0.0 || mr->alpha >= 1.0)
-      errors.push_back(
-          fmt::format("Mooney-Rivlin alpha = C2/(C1+C2) must be in [0, 1), got {}", mr->alpha));
-  }
+  detail::append_material_errors(errors, p.material);
   if (!std::isfinite(p.friction) || p.friction < 0.0)
     errors.push_back(
         fmt::format("friction coefficient must be a finite number >= 0, got {}", p.friction));
@@ -49,14 +68,7 @@ std::vector<std::string> validation_errors(const Problem& p) {
         "friction coefficient must be <= 10 (beyond, the sliding under the tip is below double "
         "precision; use --stick always for a fully held membrane), got {}",
         p.friction));
-  const double i1_max = max_first_invariant(p.material.law);
-  if (!std::isfinite(p.critical_i1) || p.critical_i1 <= 3.0)
-    errors.push_back(fmt::format("critical I1 must be a finite number > 3, got {}", p.critical_i1));
-  else if (p.critical_i1 >= i1_max)
-    errors.push_back(
-        fmt::format("critical I1 must be below the Gent locking limit 3 + J_lim = {:g}, got {:g}",
-                    i1_max,
-                    p.critical_i1));
+  detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
   const auto& s = p.stick;
   if (s.rule == StickRule::Force || s.rule == StickRule::Depth ||
       s.rule == StickRule::EdgeTension) {
