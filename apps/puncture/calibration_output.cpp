@@ -5,17 +5,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <nlohmann/json.hpp>
-#include <utility>
 
 #include "finite.hpp"
+#include "json_helpers.hpp"
 #include "stick_spec.hpp"
+#include "tables.hpp"
 
 namespace puncture::cli {
 
 namespace {
-
-using json = nlohmann::ordered_json;
 
 // ----- shared helpers -------------------------------------------------------------------------
 
@@ -33,81 +31,6 @@ json value_or_null(const std::optional<double>& x, std::string_view what) {
 
 void line(std::string& out, std::string_view label, std::string_view value) {
   out += fmt::format("  {:<28}{}\n", label, value);
-}
-
-// A table whose cells are numbers or text; a missing number is an empty cell.
-struct Cell {
-  Cell(double x) : number(x) {}                               // NOLINT: implicit on purpose
-  Cell(std::optional<double> x) : number(x) {}                // NOLINT
-  Cell(std::string s) : text(std::move(s)), is_text(true) {}  // NOLINT
-  std::optional<double> number;
-  std::string text;
-  bool is_text = false;
-};
-struct Rows {
-  std::vector<std::string> columns;
-  std::vector<std::vector<Cell>> rows;
-};
-
-std::string cell_text(const Cell& cell, const std::string& column, const char* number_format) {
-  if (cell.is_text) return cell.text;
-  return cell.number ? fmt::format(fmt::runtime(number_format), finite(*cell.number, column))
-                     : std::string();
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + '"';
-}
-
-std::string csv(const Rows& t) {
-  std::string out;
-  for (std::size_t c = 0; c < t.columns.size(); ++c) {
-    if (c) out += ',';
-    out += t.columns[c];
-  }
-  out += '\n';
-  for (const auto& row : t.rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      if (c) out += ',';
-      out += csv_field(cell_text(row[c], t.columns[c], "{:.10g}"));
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-// Aligned text table of the given rows.
-void text_table(std::string& out, const Rows& t, const std::vector<std::size_t>& rows) {
-  std::vector<std::size_t> width;
-  for (const auto& c : t.columns) width.push_back(c.size());
-  std::vector<std::vector<std::string>> cells;
-  for (const auto r : rows) {
-    auto& row = cells.emplace_back();
-    for (std::size_t c = 0; c < t.columns.size(); ++c) {
-      row.push_back(cell_text(t.rows[r][c], t.columns[c], "{:.5g}"));
-      if (row.back().empty()) row.back() = "n/a";
-      width[c] = std::max(width[c], row.back().size());
-    }
-  }
-  const auto print = [&](const std::vector<std::string>& row) {
-    std::string text = " ";
-    for (std::size_t c = 0; c < row.size(); ++c) text += fmt::format(" {:>{}}", row[c], width[c]);
-    out += text + "\n";
-  };
-  print(t.columns);
-  for (const auto& row : cells) print(row);
-}
-
-std::vector<std::size_t> all_rows(const Rows& t) {
-  std::vector<std::size_t> rows(t.rows.size());
-  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = i;
-  return rows;
 }
 
 // About `shown` evenly spaced rows, always the first and the last.
@@ -186,12 +109,10 @@ std::string inversion_text(const Inversion& i, std::string_view what) {
   return text;
 }
 
-std::string dump(const json& j) { return j.dump(2) + "\n"; }
-
 // ----- critical I1 ----------------------------------------------------------------------------
 
-Rows tests_rows(const CriticalI1Report& r) {
-  Rows t{{"test", "initial_radius_mm", "burst_radius_mm", "stretch", "I1"}, {}};
+Table tests_rows(const CriticalI1Report& r) {
+  Table t{{"test", "initial_radius_mm", "burst_radius_mm", "stretch", "I1"}, {}};
   for (std::size_t i = 0; i < r.tests.size(); ++i)
     t.rows.push_back({std::to_string(i + 1),
                       r.tests[i].initial_radius_mm,
@@ -223,7 +144,7 @@ std::string summary(const CriticalI1Report& r) {
 
 std::string csv_text(const CriticalI1Report& r) {
   const auto& e = r.estimate;
-  Rows t{{"tests", "critical_i1", "critical_i1_sd", "critical_i1_standard_error"}, {}};
+  Table t{{"tests", "critical_i1", "critical_i1_sd", "critical_i1_standard_error"}, {}};
   t.rows.push_back(
       {static_cast<double>(r.tests.size()), e.mean, e.standard_deviation, e.standard_error});
   return csv(t);
@@ -332,17 +253,17 @@ std::vector<Cell> friction_row(const FrictionEstimate& e, const FrictionReport& 
 }
 
 std::string csv_text(const FrictionReport& r) {
-  Rows t{{"method",
-          "hole_ratio",
-          "friction",
-          "friction_ratio_plus_sd",
-          "friction_ratio_minus_sd",
-          "stretch_at_zero_friction",
-          "stretch_at_max_friction",
-          "max_i1",
-          "puncture_force_n",
-          "puncture_depth_mm"},
-         {}};
+  Table t{{"method",
+           "hole_ratio",
+           "friction",
+           "friction_ratio_plus_sd",
+           "friction_ratio_minus_sd",
+           "stretch_at_zero_friction",
+           "stretch_at_max_friction",
+           "max_i1",
+           "puncture_force_n",
+           "puncture_depth_mm"},
+          {}};
   if (r.at_measured_force) t.rows.push_back(friction_row(*r.at_measured_force, r));
   t.rows.push_back(friction_row(r.at_predicted_puncture, r));
   return csv(t);
@@ -444,25 +365,28 @@ std::string csv_text(const JLimReport& r) {
   };
   const auto& p = e.puncture;
   const auto if_found = [&](double x) { return p.found ? std::optional<double>(x) : std::nullopt; };
-  Rows t{{"j_lim",
-          "j_lim_force_plus_sd",
-          "j_lim_force_minus_sd",
-          "j_lim_critical_i1_plus_sd",
-          "j_lim_critical_i1_minus_sd",
-          "puncture_force_n",
-          "puncture_depth_mm",
-          "part_three_stretch",
-          "max_i1_at_force"},
-         {}};
-  t.rows.push_back({value_of(e.j_lim),
-                    j(r.force_plus_sd),
-                    j(r.force_minus_sd),
-                    j(r.i1_plus_sd),
-                    j(r.i1_minus_sd),
-                    if_found(p.force_n),
-                    if_found(p.depth_mm),
-                    if_found(p.part_three_stretch),
-                    e.max_first_invariant_at_force});
+  Table t{{"j_lim",
+           "j_lim_force_plus_sd",
+           "j_lim_force_minus_sd",
+           "j_lim_critical_i1_plus_sd",
+           "j_lim_critical_i1_minus_sd",
+           "puncture_force_n",
+           "puncture_depth_mm",
+           "part_three_stretch",
+           "max_i1_at_force"},
+          {}};
+  // (a row of numbers only; built from an array, which spares GCC 12 a false
+  // -Wmaybe-uninitialized on the cells' text member)
+  const std::optional<double> row[] = {value_of(e.j_lim),
+                                       j(r.force_plus_sd),
+                                       j(r.force_minus_sd),
+                                       j(r.i1_plus_sd),
+                                       j(r.i1_minus_sd),
+                                       if_found(p.force_n),
+                                       if_found(p.depth_mm),
+                                       if_found(p.part_three_stretch),
+                                       e.max_first_invariant_at_force};
+  t.rows.emplace_back(std::begin(row), std::end(row));
   return csv(t);
 }
 
@@ -507,8 +431,8 @@ std::string json_text(const JLimReport& r) {
 
 // ----- uniaxial fit ---------------------------------------------------------------------------
 
-Rows points_rows(const UniaxialFitReport& r) {
-  Rows t{{"stretch", "nominal_stress_mpa", "fitted_stress_mpa", "residual_mpa"}, {}};
+Table points_rows(const UniaxialFitReport& r) {
+  Table t{{"stretch", "nominal_stress_mpa", "fitted_stress_mpa", "residual_mpa"}, {}};
   for (std::size_t i = 0; i < r.data.size(); ++i)
     t.rows.push_back({r.data[i].stretch,
                       r.data[i].nominal_stress_mpa,
@@ -629,14 +553,6 @@ std::string json_text(const UniaxialFitReport& r) {
     specimen = {{"width_mm", finite(r.specimen->width_mm, "specimen width")},
                 {"thickness_mm", finite(r.specimen->thickness_mm, "specimen thickness")},
                 {"gauge_length_mm", finite(r.specimen->gauge_length_mm, "gauge length")}};
-  json points = json::array();
-  const auto t = points_rows(r);
-  for (const auto& row : t.rows) {
-    json p = json::object();
-    for (std::size_t c = 0; c < t.columns.size(); ++c)
-      p[t.columns[c]] = value_or_null(row[c].number, t.columns[c]);
-    points.push_back(p);
-  }
   return dump(
       {{"inputs", {{"source", r.source}, {"points", r.data.size()}, {"specimen", specimen}}},
        {"fit",
@@ -653,7 +569,7 @@ std::string json_text(const UniaxialFitReport& r) {
          {"rms_residual_mpa", finite(f.rms_residual_mpa, "RMS residual")},
          {"residual_sd_mpa", finite(f.residual_sd_mpa, "residual sd")},
          {"material", material}}},
-       {"points", points}});
+       {"points", rows_json(points_rows(r))}});
 }
 
 std::string csv_text(const UniaxialFitReport& r) { return csv(points_rows(r)); }
@@ -741,17 +657,17 @@ std::string summary(const BandReport& r) {
   out +=
       "One parameter at a time (the others nominal; forces in N, depths in mm; share: of the\n"
       "first-order variance of the force; monotone: along --samples points of the interval)\n";
-  Rows t{{"parameter",
-          "lower",
-          "upper",
-          "force_lower",
-          "force_upper",
-          "force_change",
-          "share",
-          "depth_lower",
-          "depth_upper",
-          "monotone"},
-         {}};
+  Table t{{"parameter",
+           "lower",
+           "upper",
+           "force_lower",
+           "force_upper",
+           "force_change",
+           "share",
+           "depth_lower",
+           "depth_upper",
+           "monotone"},
+          {}};
   const auto if_found = [](const BandEvaluation& e, double x) {
     return e.found ? std::optional<double>(x) : std::nullopt;
   };
@@ -800,17 +716,17 @@ std::vector<Cell> evaluation_row(const std::string& kind, const BandEvaluation& 
 
 std::string csv_text(const BandReport& r) {
   const auto& b = r.band;
-  Rows t{{"case",
-          "critical_i1",
-          "friction",
-          "j_lim",
-          "shear_modulus_mpa",
-          "found",
-          "puncture_force_n",
-          "puncture_depth_mm",
-          "part_three_stretch",
-          "message"},
-         {}};
+  Table t{{"case",
+           "critical_i1",
+           "friction",
+           "j_lim",
+           "shear_modulus_mpa",
+           "found",
+           "puncture_force_n",
+           "puncture_depth_mm",
+           "part_three_stretch",
+           "message"},
+          {}};
   t.rows.push_back(evaluation_row("nominal", b.nominal));
   const auto end = [&](const char* kind, const std::optional<std::size_t>& corner) {
     if (corner) t.rows.push_back(evaluation_row(kind, b.corners[*corner]));

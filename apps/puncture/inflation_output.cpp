@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -13,108 +12,28 @@
 #include <vector>
 
 #include "finite.hpp"
+#include "json_helpers.hpp"
 #include "names.hpp"
+#include "tables.hpp"
 
 namespace puncture::cli {
 
 namespace {
 
-using json = nlohmann::ordered_json;
-
 // ----- a table of numbers and labels -----------------------------------------------------------
 
-// A cell: a number (empty when unbounded, e.g. the flat state's radius of curvature) or text.
-using Cell = std::variant<std::optional<double>, std::string>;
-
-struct Rows {
-  std::vector<std::string> columns;
-  std::vector<std::vector<Cell>> rows;
-};
-
-std::string cell_text(const Cell& cell, const std::string& column, const char* number_format,
-                      const char* missing) {
-  if (const auto* text = std::get_if<std::string>(&cell)) return *text;
-  const auto& x = std::get<std::optional<double>>(cell);
-  return x ? fmt::format(fmt::runtime(number_format), finite(*x, column)) : std::string(missing);
-}
-
-std::string csv(const Rows& t) {
-  std::string out;
-  for (std::size_t c = 0; c < t.columns.size(); ++c) {
-    if (c) out += ',';
-    out += t.columns[c];
-  }
-  out += '\n';
-  for (const auto& row : t.rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      if (c) out += ',';
-      out += cell_text(row[c], t.columns[c], "{:.10g}", "");
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-json json_rows(const Rows& t) {
-  json rows = json::array();
-  for (const auto& row : t.rows) {
-    json r = json::object();
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      if (const auto* text = std::get_if<std::string>(&row[c])) {
-        r[t.columns[c]] = *text;
-      } else {
-        const auto& x = std::get<std::optional<double>>(row[c]);
-        r[t.columns[c]] = x ? json(finite(*x, t.columns[c])) : json(nullptr);
-      }
-    }
-    rows.push_back(std::move(r));
-  }
-  return rows;
-}
-
 // The columns of `t` named in `keep`, in their order.
-Rows only(const Rows& t, const std::vector<std::string>& keep) {
+Table only(const Table& t, const std::vector<std::string>& keep) {
   std::vector<std::size_t> index;
   for (std::size_t c = 0; c < t.columns.size(); ++c)
     if (std::find(keep.begin(), keep.end(), t.columns[c]) != keep.end()) index.push_back(c);
-  Rows out;
+  Table out;
   for (const auto c : index) out.columns.push_back(t.columns[c]);
   for (const auto& row : t.rows) {
     auto& r = out.rows.emplace_back();
     for (const auto c : index) r.push_back(row[c]);
   }
   return out;
-}
-
-void text_table(std::string& out, const Rows& t, const std::vector<std::size_t>& rows) {
-  std::vector<std::size_t> width;
-  for (const auto& c : t.columns) width.push_back(c.size());
-  std::vector<std::vector<std::string>> cells;
-  for (const auto r : rows) {
-    auto& row = cells.emplace_back();
-    for (std::size_t c = 0; c < t.columns.size(); ++c) {
-      row.push_back(cell_text(t.rows[r][c], t.columns[c], "{:.5g}", "n/a"));
-      width[c] = std::max(width[c], row.back().size());
-    }
-  }
-  const auto print = [&](const std::vector<std::string>& row) {
-    std::string text = " ";
-    for (std::size_t c = 0; c < row.size(); ++c) text += fmt::format(" {:>{}}", row[c], width[c]);
-    out += text + "\n";
-  };
-  print(t.columns);
-  for (const auto& row : cells) print(row);
-}
-
-// About `shown` evenly spaced rows of n, always the first and the last.
-std::vector<std::size_t> sampled_rows(std::size_t n, std::size_t shown = 16) {
-  std::set<std::size_t> rows;
-  if (n == 0) return {};
-  if (n <= shown + 8) shown = n;
-  for (std::size_t k = 0; k < shown; ++k)
-    rows.insert(shown == 1 ? 0 : (k * (n - 1) + (shown - 1) / 2) / (shown - 1));
-  rows.insert(n - 1);
-  return {rows.begin(), rows.end()};
 }
 
 std::optional<double> bounded(double x, std::string_view what) {
@@ -162,18 +81,18 @@ std::vector<Cell> state_cells(const InflationState& s) {
           s.max_first_invariant_radius_mm};
 }
 
-Rows fields_rows(const InflationFields& f) {
-  Rows t{{"R_mm",
-          "r_mm",
-          "z_mm",
-          "slope_rad",
-          "lambda1",
-          "lambda2",
-          "lambda3",
-          "s1_mpa",
-          "s2_mpa",
-          "I1"},
-         {}};
+Table fields_rows(const InflationFields& f) {
+  Table t{{"R_mm",
+           "r_mm",
+           "z_mm",
+           "slope_rad",
+           "lambda1",
+           "lambda2",
+           "lambda3",
+           "s1_mpa",
+           "s2_mpa",
+           "I1"},
+          {}};
   for (std::size_t i = 0; i < f.size(); ++i)
     t.rows.push_back({f.reference_radius_mm[i],
                       f.radius_mm[i],
@@ -189,13 +108,13 @@ Rows fields_rows(const InflationFields& f) {
 }
 
 json state_json(const InflationState& s, bool with_fields) {
-  Rows one{kStateColumns, {state_cells(s)}};
-  json out = json_rows(one).at(0);
+  Table one{kStateColumns, {state_cells(s)}};
+  json out = rows_json(one).at(0);
   out["clamp_slope_rad"] = finite(s.clamp_slope_rad, "clamp slope");
   out["pole_stress_mpa"] = finite(s.pole_stress_mpa, "pole stress");
   out["clamp_residual"] = finite(s.clamp_residual, "clamp residual");
   out["shooting_evaluations"] = s.shooting_evaluations;
-  if (with_fields) out["fields"] = json_rows(fields_rows(s.fields));
+  if (with_fields) out["fields"] = rows_json(fields_rows(s.fields));
   return out;
 }
 
@@ -291,13 +210,11 @@ void extrema_lines(std::string& out, const std::vector<PressureExtremum>& extrem
   for (const auto& e : extrema) extremum_lines(out, e);
 }
 
-std::string dump(const json& j) { return j.dump(2) + "\n"; }
-
 // ----- the curve ---------------------------------------------------------------------------------
 
 // The curve's states and, at their pole stretches, the extrema and the burst (labelled).
-Rows curve_rows(const InflationCurve& c, bool with_points) {
-  Rows t;
+Table curve_rows(const InflationCurve& c, bool with_points) {
+  Table t;
   t.columns = kStateColumns;
   if (with_points) t.columns.insert(t.columns.begin(), "point");
   struct Labelled {
@@ -345,7 +262,7 @@ std::string summary(const InflationCurveReport& r) {
   }
   out += "Curve (sampled; --format csv for every point)\n";
   const auto rows = only(curve_rows(c, false), kSummaryColumns);
-  text_table(out, rows, sampled_rows(rows.rows.size()));
+  text_table(out, rows, spread_rows(rows.rows.size()));
   return out;
 }
 
@@ -362,7 +279,7 @@ json curve_json(const InflationCurveReport& r) {
           {"curve",
            {{"end_pole_stretch", finite(c.end_pole_stretch, "end pole stretch")},
             {"ends_at", r.to_burst ? "burst" : "max_pole_stretch"},
-            {"points", json_rows(curve_rows(c, false))},
+            {"points", rows_json(curve_rows(c, false))},
             {"extrema", extrema},
             {"burst", burst}}}};
 }
@@ -381,16 +298,16 @@ std::string summary(const InflationStateReport& r) {
   out += fmt::format(
       "Fields along the meridian from the pole ({} of {} points; --format csv for "
       "all)\n",
-      sampled_rows(fields.rows.size()).size(),
+      spread_rows(fields.rows.size()).size(),
       fields.rows.size());
-  text_table(out, fields, sampled_rows(fields.rows.size()));
+  text_table(out, fields, spread_rows(fields.rows.size()));
   return out;
 }
 
 // ----- at a pressure -----------------------------------------------------------------------------
 
-Rows pressure_rows(const InflationAtPressure& a) {
-  Rows t;
+Table pressure_rows(const InflationAtPressure& a) {
+  Table t;
   t.columns = kStateColumns;
   t.columns.insert(t.columns.begin(), "branch");
   for (std::size_t k = 0; k < a.states.size(); ++k) {
@@ -423,7 +340,7 @@ std::string summary(const InflationPressureReport& r) {
   if (!a.states.empty()) {
     out += "States (--format json for their fields)\n";
     const auto rows = only(pressure_rows(a), kSummaryColumns);
-    text_table(out, rows, sampled_rows(rows.rows.size()));
+    text_table(out, rows, spread_rows(rows.rows.size()));
   }
   return out;
 }

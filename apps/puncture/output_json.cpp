@@ -1,8 +1,7 @@
 // JSON writer: the same facts as the summary, every number checked finite; a quantity that is
 // unbounded in some states (the corner tension ratio of a held membrane) is written as null.
-#include <nlohmann/json.hpp>
-
 #include "finite.hpp"
+#include "json_helpers.hpp"
 #include "names.hpp"
 #include "output.hpp"
 #include "part_two_onset.hpp"
@@ -12,26 +11,6 @@
 namespace puncture::cli {
 
 namespace {
-
-using json = nlohmann::ordered_json;
-
-json rows_of(const Table& table) {
-  json rows = json::array();
-  for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    json row = json::object();
-    for (std::size_t c = 0; c < table.columns.size(); ++c) {
-      const auto& cell = table.rows[r][c];
-      if (const auto* text = std::get_if<std::string>(&cell))
-        row[table.columns[c]] = *text;
-      else if (std::holds_alternative<int>(cell))
-        row[table.columns[c]] = std::get<int>(cell);
-      else
-        row[table.columns[c]] = checked_number(table, r, c);
-    }
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
 
 json inputs_json(const Problem& p) {
   json material = {{"law", material_token(p.material.law)},
@@ -58,7 +37,7 @@ json inputs_json(const Problem& p) {
 
 json puncture_json(const PuncturePrediction& p) {
   if (!p.found) return {{"found", false}, {"message", p.message}};
-  json out = rows_of(puncture_table(p)).at(0);
+  json out = rows_json(puncture_table(p)).at(0);
   out["found"] = true;
   return out;
 }
@@ -87,7 +66,7 @@ json state_json(const Equilibrium& e) {
   };
   if (const auto ratio = finite_or_unbounded(e.corner_tension_ratio, "corner tension ratio"))
     out["corner_tension_ratio"] = *ratio;
-  out["fields"] = rows_of(fields_table(e.fields));
+  out["fields"] = rows_json(fields_table(e.fields));
   return out;
 }
 
@@ -109,12 +88,10 @@ json curve_json(const CurveReport& r) {
               {"max_depth_mm", nullptr},
               {"stick_slip", stick_slip},
               {"part_two_onset", part_two},
-              {"points", rows_of(curve_table(c.points))}};
+              {"points", rows_json(curve_table(c.points))}};
   if (r.max_depth_mm > 0.0) out["max_depth_mm"] = finite(r.max_depth_mm, "max depth");
   return out;
 }
-
-std::string dump(const json& j) { return j.dump(2) + "\n"; }
 
 }  // namespace
 

@@ -15,9 +15,6 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::size_t kAllRowsUpTo = 24;  // curves this short are shown whole
-constexpr std::size_t kCurveRows = 16;    // else rows sampled (plus the last and the switch)
-
 std::string num(double x, std::string_view what) { return fmt::format("{:.5g}", finite(x, what)); }
 
 void line(std::string& out, std::string_view label, std::string_view value) {
@@ -40,42 +37,11 @@ void inputs(std::string& out, const Problem& p) {
        num(force_scale_n(p), "force scale") + " N (normalised force = F / this)");
 }
 
-// Aligned text table; `rows` are indices into table.rows.
-void text_table(std::string& out, const Table& table, const std::vector<std::size_t>& rows) {
-  std::vector<std::vector<std::string>> cells;
-  std::vector<std::size_t> width;
-  for (const auto& c : table.columns) width.push_back(c.size());
-  for (const auto r : rows) {
-    auto& row = cells.emplace_back();
-    for (std::size_t c = 0; c < table.columns.size(); ++c) {
-      const auto& cell = table.rows[r][c];
-      if (const auto* text = std::get_if<std::string>(&cell))
-        row.push_back(*text);
-      else if (std::holds_alternative<int>(cell))
-        row.push_back(fmt::format("{}", std::get<int>(cell)));
-      else
-        row.push_back(fmt::format("{:.5g}", checked_number(table, r, c)));
-      width[c] = std::max(width[c], row.back().size());
-    }
-  }
-  auto print_row = [&](const std::vector<std::string>& row) {
-    std::string text = " ";
-    for (std::size_t c = 0; c < row.size(); ++c) text += fmt::format(" {:>{}}", row[c], width[c]);
-    out += text + "\n";
-  };
-  print_row(table.columns);
-  for (const auto& row : cells) print_row(row);
-}
-
-// About kCurveRows evenly spaced rows, the last one, and both sides of a stage change.
+// About 16 evenly spaced rows (all up to 24), the last one, and both sides of a stage change.
 std::vector<std::size_t> sampled_rows(const std::vector<CurvePoint>& points) {
-  std::set<std::size_t> rows;
   const std::size_t n = points.size();
-  if (n == 0) return {};
-  const std::size_t shown = n <= kAllRowsUpTo ? n : kCurveRows;
-  for (std::size_t k = 0; k < shown; ++k)
-    rows.insert(shown == 1 ? 0 : (k * (n - 1) + (shown - 1) / 2) / (shown - 1));
-  rows.insert(n - 1);
+  const auto spread = spread_rows(n);
+  std::set<std::size_t> rows(spread.begin(), spread.end());
   for (std::size_t i = 1; i < n; ++i)
     if (points[i].stage != points[i - 1].stage) rows.insert({i - 1, i});
   return {rows.begin(), rows.end()};
@@ -202,9 +168,7 @@ std::string summary_text(const StateReport& r) {
       "indenter's side, 1 free; R reference and r current radius, z deflection [mm];\n"
       "s1, s2 nominal stresses [MPa])\n",
       table.rows.size());
-  std::vector<std::size_t> all(table.rows.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  text_table(out, table, all);
+  text_table(out, table, all_rows(table));
   return out;
 }
 

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <set>
+
 #include "finite.hpp"
 #include "names.hpp"
 
@@ -115,10 +118,91 @@ Table verification_table(const VerificationReport& report) {
   return t;
 }
 
+bool is_missing(const Cell& cell) {
+  const auto* x = std::get_if<std::optional<double>>(&cell);
+  return x && !x->has_value();
+}
+
 double checked_number(const Table& table, std::size_t row, std::size_t column) {
   const auto& cell = table.rows[row][column];
-  const double x = std::holds_alternative<int>(cell) ? std::get<int>(cell) : std::get<double>(cell);
+  const double x = std::holds_alternative<int>(cell)
+                       ? std::get<int>(cell)
+                       : std::get<std::optional<double>>(cell).value();
   return finite(x, fmt::format("{} in row {}", table.columns[column], row + 1));
+}
+
+namespace {
+
+// A cell as text: numbers in `number_format`, a missing number as `missing`.
+std::string cell_text(const Table& table, std::size_t row, std::size_t column,
+                      const char* number_format, const char* missing) {
+  const auto& cell = table.rows[row][column];
+  if (const auto* text = std::get_if<std::string>(&cell)) return *text;
+  if (const auto* count = std::get_if<int>(&cell)) return fmt::format("{}", *count);
+  if (is_missing(cell)) return missing;
+  return fmt::format(fmt::runtime(number_format), checked_number(table, row, column));
+}
+
+std::string quoted(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + '"';
+}
+
+}  // namespace
+
+std::string csv(const Table& table) {
+  std::string out;
+  for (std::size_t c = 0; c < table.columns.size(); ++c) out += (c ? "," : "") + table.columns[c];
+  out += '\n';
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      if (c) out += ',';
+      out += quoted(cell_text(table, r, c, "{:.10g}", ""));
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+void text_table(std::string& out, const Table& table, const std::vector<std::size_t>& rows) {
+  std::vector<std::vector<std::string>> cells;
+  std::vector<std::size_t> width;
+  for (const auto& c : table.columns) width.push_back(c.size());
+  for (const auto r : rows) {
+    auto& row = cells.emplace_back();
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      row.push_back(cell_text(table, r, c, "{:.5g}", "n/a"));
+      width[c] = std::max(width[c], row.back().size());
+    }
+  }
+  auto print_row = [&](const std::vector<std::string>& row) {
+    std::string text = " ";
+    for (std::size_t c = 0; c < row.size(); ++c) text += fmt::format(" {:>{}}", row[c], width[c]);
+    out += text + "\n";
+  };
+  print_row(table.columns);
+  for (const auto& row : cells) print_row(row);
+}
+
+std::vector<std::size_t> all_rows(const Table& table) {
+  std::vector<std::size_t> rows(table.rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = i;
+  return rows;
+}
+
+std::vector<std::size_t> spread_rows(std::size_t n, std::size_t shown) {
+  std::set<std::size_t> rows;
+  if (n == 0) return {};
+  if (n <= shown + 8) shown = n;
+  for (std::size_t k = 0; k < shown; ++k)
+    rows.insert(shown == 1 ? 0 : (k * (n - 1) + (shown - 1) / 2) / (shown - 1));
+  rows.insert(n - 1);
+  return {rows.begin(), rows.end()};
 }
 
 }  // namespace puncture::cli

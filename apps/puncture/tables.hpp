@@ -1,6 +1,7 @@
 #pragma once
 // Tables shared by the writers: the loading curve and the membrane fields, one row per point,
-// with units in the column names.
+// with units in the column names; and how every command writes a table (CSV, aligned text).
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -11,7 +12,9 @@
 
 namespace puncture::cli {
 
-using Cell = std::variant<double, int, std::string>;
+// A cell: a number (empty when there is none, e.g. an unbounded or not-found quantity: an empty
+// CSV cell, null in JSON, "n/a" in a summary), a count, or text.
+using Cell = std::variant<std::optional<double>, int, std::string>;
 
 struct Table {
   std::vector<std::string> columns;
@@ -34,7 +37,26 @@ Table puncture_table(const PuncturePrediction& puncture);
 // tolerance, verdict, note.  A skipped check has empty numbers (NaN: written empty or null).
 Table verification_table(const VerificationReport& report);
 
-// The number in a cell, checked finite (SolveError naming the column otherwise).
+// A number cell that holds no number.
+bool is_missing(const Cell& cell);
+
+// The number in a cell (a count, or a number that is there), checked finite (SolveError naming
+// the column and the row otherwise).
 double checked_number(const Table& table, std::size_t row, std::size_t column);
+
+// CSV: the column names, then one line per row; numbers as {:.10g}, a missing number empty,
+// text quoted where it holds a comma, a quote or a newline.
+std::string csv(const Table& table);
+
+// Aligned text of the given rows (indices into table.rows) under the column names, for the
+// summaries: numbers as {:.5g}, a missing number "n/a".
+void text_table(std::string& out, const Table& table, const std::vector<std::size_t>& rows);
+
+// Every row's index.
+std::vector<std::size_t> all_rows(const Table& table);
+
+// About `shown` evenly spaced rows of n, the first and the last among them; all n when
+// n <= shown + 8.
+std::vector<std::size_t> spread_rows(std::size_t n, std::size_t shown = 16);
 
 }  // namespace puncture::cli
