@@ -24,11 +24,6 @@ std::string num_or(const std::optional<double>& x, std::string_view what,
   return x ? num(*x, what) : std::string(missing);
 }
 
-json value_or_null(const std::optional<double>& x, std::string_view what) {
-  if (!x) return nullptr;
-  return finite(*x, what);
-}
-
 void line(std::string& out, std::string_view label, std::string_view value) {
   out += fmt::format("  {:<28}{}\n", label, value);
 }
@@ -62,29 +57,6 @@ void problem_lines(std::string& out, const Problem& p, std::string_view calibrat
   if (calibrated != "friction") line(out, "friction mu'", num(p.friction, "friction"));
   line(out, "stick criterion", describe_stick(p.stick));
   line(out, "Part II equation", to_string(p.part_two_equation));
-}
-
-json problem_json(const Problem& p, std::string_view calibrated) {
-  json material = {{"law", law_name(p.material.law)},
-                   {"shear_modulus_mpa", finite(p.material.shear_modulus_mpa, "shear modulus")}};
-  if (const auto* gent = std::get_if<Gent>(&p.material.law); gent && calibrated != "jlim")
-    material["j_lim"] = finite(gent->j_lim, "J_lim");
-  if (const auto* mr = std::get_if<MooneyRivlin>(&p.material.law))
-    material["alpha"] = finite(mr->alpha, "Mooney-Rivlin alpha");
-  json out = {{"clamp_radius_mm", finite(p.geometry.clamp_radius_mm, "clamp radius")},
-              {"indenter_radius_mm", finite(p.geometry.indenter_radius_mm, "indenter radius")},
-              {"thickness_mm", finite(p.geometry.thickness_mm, "thickness")},
-              {"material", material}};
-  if (calibrated != "friction") out["friction"] = finite(p.friction, "friction");
-  out["critical_i1"] = finite(p.critical_i1, "critical I1");
-  json stick = {{"rule", to_string(p.stick.rule)}};
-  if (const auto unit = threshold_unit(p.stick.rule); !unit.empty()) {
-    stick["threshold"] = finite(p.stick.threshold, "stick threshold");
-    stick["threshold_unit"] = unit;
-  }
-  out["stick"] = stick;
-  out["part_two_equation"] = to_string(p.part_two_equation);
-  return out;
 }
 
 std::optional<double> value_of(const Inversion& i) {
@@ -539,15 +511,7 @@ std::string json_text(const UniaxialFitReport& r) {
                           {"standard_error", value_or_null(p.standard_error, p.name)},
                           {"identifiable", p.identifiable},
                           {"note", p.note}});
-  json material = nullptr;
-  if (f.material) {
-    material = {{"law", law_name(f.material->law)},
-                {"shear_modulus_mpa", finite(f.material->shear_modulus_mpa, "G")}};
-    if (const auto* gent = std::get_if<Gent>(&f.material->law))
-      material["j_lim"] = finite(gent->j_lim, "J_lim");
-    if (const auto* mr = std::get_if<MooneyRivlin>(&f.material->law))
-      material["alpha"] = finite(mr->alpha, "alpha");
-  }
+  const json material = f.material ? material_json(*f.material) : json(nullptr);
   json specimen = nullptr;
   if (r.specimen)
     specimen = {{"width_mm", finite(r.specimen->width_mm, "specimen width")},

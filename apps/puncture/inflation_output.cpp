@@ -13,7 +13,6 @@
 
 #include "finite.hpp"
 #include "json_helpers.hpp"
-#include "names.hpp"
 #include "tables.hpp"
 
 namespace puncture::cli {
@@ -127,15 +126,9 @@ json extremum_json(const PressureExtremum& e) {
 }
 
 json inputs_json(const InflationProblem& p) {
-  json material = {{"law", material_token(p.material.law)},
-                   {"shear_modulus_mpa", finite(p.material.shear_modulus_mpa, "shear modulus")}};
-  if (const auto* gent = std::get_if<Gent>(&p.material.law))
-    material["j_lim"] = finite(gent->j_lim, "J_lim");
-  if (const auto* mr = std::get_if<MooneyRivlin>(&p.material.law))
-    material["alpha"] = finite(mr->alpha, "Mooney-Rivlin alpha");
   return {{"clamp_radius_mm", finite(p.clamp_radius_mm, "clamp radius")},
           {"thickness_mm", finite(p.thickness_mm, "thickness")},
-          {"material", material},
+          {"material", material_json(p.material)},
           {"critical_i1", finite(p.critical_i1, "critical I1")},
           {"pressure_scale_mpa", finite(pressure_scale_mpa(p), "pressure scale")}};
 }

@@ -1,5 +1,9 @@
 #include "json_helpers.hpp"
 
+#include "finite.hpp"
+#include "names.hpp"
+#include "stick_spec.hpp"
+
 namespace puncture::cli {
 
 std::string dump(const json& j) { return j.dump(2) + "\n"; }
@@ -22,6 +26,42 @@ json rows_json(const Table& table) {
     rows.push_back(std::move(row));
   }
   return rows;
+}
+
+json value_or_null(const std::optional<double>& x, std::string_view what) {
+  if (!x) return nullptr;
+  return finite(*x, what);
+}
+
+json material_json(const Material& m, bool with_j_lim) {
+  json material = {{"law", material_token(m.law)},
+                   {"shear_modulus_mpa", finite(m.shear_modulus_mpa, "shear modulus")}};
+  if (const auto* gent = std::get_if<Gent>(&m.law); gent && with_j_lim)
+    material["j_lim"] = finite(gent->j_lim, "J_lim");
+  if (const auto* mr = std::get_if<MooneyRivlin>(&m.law))
+    material["alpha"] = finite(mr->alpha, "Mooney-Rivlin alpha");
+  return material;
+}
+
+json stick_json(const StickCriterion& s) {
+  json stick = {{"rule", to_string(s.rule)}};
+  if (const auto unit = threshold_unit(s.rule); !unit.empty()) {
+    stick["threshold"] = finite(s.threshold, "stick threshold");
+    stick["threshold_unit"] = unit;
+  }
+  return stick;
+}
+
+json problem_json(const Problem& p, std::string_view calibrated) {
+  json out = {{"clamp_radius_mm", finite(p.geometry.clamp_radius_mm, "clamp radius")},
+              {"indenter_radius_mm", finite(p.geometry.indenter_radius_mm, "indenter radius")},
+              {"thickness_mm", finite(p.geometry.thickness_mm, "thickness")},
+              {"material", material_json(p.material, calibrated != "jlim")}};
+  if (calibrated != "friction") out["friction"] = finite(p.friction, "friction");
+  out["critical_i1"] = finite(p.critical_i1, "critical I1");
+  out["stick"] = stick_json(p.stick);
+  out["part_two_equation"] = to_string(p.part_two_equation);
+  return out;
 }
 
 }  // namespace puncture::cli

@@ -5,7 +5,6 @@
 #include "names.hpp"
 #include "output.hpp"
 #include "part_two_onset.hpp"
-#include "stick_spec.hpp"
 #include "tables.hpp"
 
 namespace puncture::cli {
@@ -13,26 +12,9 @@ namespace puncture::cli {
 namespace {
 
 json inputs_json(const Problem& p) {
-  json material = {{"law", material_token(p.material.law)},
-                   {"shear_modulus_mpa", finite(p.material.shear_modulus_mpa, "shear modulus")}};
-  if (const auto* gent = std::get_if<Gent>(&p.material.law))
-    material["j_lim"] = finite(gent->j_lim, "J_lim");
-  if (const auto* mr = std::get_if<MooneyRivlin>(&p.material.law))
-    material["alpha"] = finite(mr->alpha, "Mooney-Rivlin alpha");
-  json stick = {{"rule", to_string(p.stick.rule)}};
-  if (const auto unit = threshold_unit(p.stick.rule); !unit.empty()) {
-    stick["threshold"] = finite(p.stick.threshold, "stick threshold");
-    stick["threshold_unit"] = unit;
-  }
-  return {{"clamp_radius_mm", finite(p.geometry.clamp_radius_mm, "clamp radius")},
-          {"indenter_radius_mm", finite(p.geometry.indenter_radius_mm, "indenter radius")},
-          {"thickness_mm", finite(p.geometry.thickness_mm, "thickness")},
-          {"material", material},
-          {"friction", finite(p.friction, "friction")},
-          {"critical_i1", finite(p.critical_i1, "critical I1")},
-          {"stick", stick},
-          {"part_two_equation", to_string(p.part_two_equation)},
-          {"force_scale_n", finite(force_scale_n(p), "force scale")}};
+  json out = problem_json(p);
+  out["force_scale_n"] = finite(force_scale_n(p), "force scale");
+  return out;
 }
 
 json puncture_json(const PuncturePrediction& p) {
