@@ -208,20 +208,6 @@ constexpr BandFlagNames kBandFlags[4] = {
     {"--shear-modulus-sd", "--shear-modulus-range", "--shear-modulus", " MPa"},
 };
 
-std::optional<ParameterRange>& range_slot(BandRanges& r, BandParameter p) {
-  switch (p) {
-    case BandParameter::CriticalI1:
-      return r.critical_i1;
-    case BandParameter::Friction:
-      return r.friction;
-    case BandParameter::JLim:
-      return r.j_lim;
-    case BandParameter::ShearModulus:
-      break;
-  }
-  return r.shear_modulus_mpa;
-}
-
 std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format format) {
   BandReport report;
   report.problem = make_problem(pf);
@@ -230,14 +216,7 @@ std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format f
   if (f.band_samples < 2 || f.band_samples > 1000)
     throw InputError(
         fmt::format("--samples: must be in the range 2 to 1000, got {}", f.band_samples));
-  const BandParameters nominal = [&] {
-    BandParameters b;
-    b.critical_i1 = report.problem.critical_i1;
-    b.friction = report.problem.friction;
-    if (const auto* gent = std::get_if<Gent>(&report.problem.material.law)) b.j_lim = gent->j_lim;
-    b.shear_modulus_mpa = report.problem.material.shear_modulus_mpa;
-    return b;
-  }();
+  const BandParameters nominal = band_parameters(report.problem);
   bool any = false;
   for (int i = 0; i < 4; ++i) {
     const auto p = kBandParameters[i];
@@ -269,7 +248,7 @@ std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format f
     }
     // The range itself (finite, ordered, containing the nominal value, valid at both ends and
     // at every corner) is checked by the library, with the messages the Python bindings give.
-    range_slot(report.ranges, p) = range;
+    report.ranges.of(p) = range;
     any = true;
   }
   if (!any)

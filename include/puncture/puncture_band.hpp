@@ -54,6 +54,9 @@ struct BandRanges {
   std::optional<ParameterRange> friction;
   std::optional<ParameterRange> j_lim;  // the Gent law only
   std::optional<ParameterRange> shear_modulus_mpa;
+  // The interval of `parameter`.
+  std::optional<ParameterRange>& of(BandParameter parameter);
+  const std::optional<ParameterRange>& of(BandParameter parameter) const;
 };
 
 struct BandOptions {
@@ -71,6 +74,9 @@ struct BandParameters {
   double shear_modulus_mpa = 0.0;
   double value(BandParameter parameter) const;  // j_lim: 0 when empty
 };
+
+// The problem's values of the four parameters: the nominal point of a band.
+BandParameters band_parameters(const Problem& problem);
 
 // One predicted puncture (predict_puncture) at one parameter set.
 struct BandEvaluation {

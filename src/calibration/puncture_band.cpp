@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "puncture/loading_curve.hpp"
 
@@ -21,29 +22,6 @@ constexpr BandParameter kAll[] = {BandParameter::CriticalI1,
 // Two predictions closer than this, relative, are the same: each puncture force and depth is
 // converged to ~1e-8 relative (SolverOptions' defaults), so a difference below 1e-7 is noise.
 constexpr double kSameRel = 1e-7;
-
-const std::optional<ParameterRange>& range_of(const BandRanges& r, BandParameter p) {
-  switch (p) {
-    case BandParameter::CriticalI1:
-      return r.critical_i1;
-    case BandParameter::Friction:
-      return r.friction;
-    case BandParameter::JLim:
-      return r.j_lim;
-    case BandParameter::ShearModulus:
-      break;
-  }
-  return r.shear_modulus_mpa;
-}
-
-BandParameters parameters_of(const Problem& p) {
-  BandParameters out;
-  out.critical_i1 = p.critical_i1;
-  out.friction = p.friction;
-  if (const auto* gent = std::get_if<Gent>(&p.material.law)) out.j_lim = gent->j_lim;
-  out.shear_modulus_mpa = p.material.shear_modulus_mpa;
-  return out;
-}
 
 void set(BandParameters& b, BandParameter p, double value) {
   switch (p) {
@@ -183,6 +161,33 @@ ParameterRange plus_minus(double mean, double sd, double k) {
   return {mean - k * sd, mean + k * sd};
 }
 
+const std::optional<ParameterRange>& BandRanges::of(BandParameter parameter) const {
+  switch (parameter) {
+    case BandParameter::CriticalI1:
+      return critical_i1;
+    case BandParameter::Friction:
+      return friction;
+    case BandParameter::JLim:
+      return j_lim;
+    case BandParameter::ShearModulus:
+      break;
+  }
+  return shear_modulus_mpa;
+}
+
+std::optional<ParameterRange>& BandRanges::of(BandParameter parameter) {
+  return const_cast<std::optional<ParameterRange>&>(std::as_const(*this).of(parameter));
+}
+
+BandParameters band_parameters(const Problem& p) {
+  BandParameters out;
+  out.critical_i1 = p.critical_i1;
+  out.friction = p.friction;
+  if (const auto* gent = std::get_if<Gent>(&p.material.law)) out.j_lim = gent->j_lim;
+  out.shear_modulus_mpa = p.material.shear_modulus_mpa;
+  return out;
+}
+
 double BandParameters::value(BandParameter parameter) const {
   switch (parameter) {
     case BandParameter::CriticalI1:
@@ -209,10 +214,10 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
         fmt::format("J_lim range: J_lim is a parameter of the Gent law; the material is {}",
                     law_name(problem.material.law)));
 
-  const BandParameters nominal = parameters_of(problem);
+  const BandParameters nominal = band_parameters(problem);
   std::vector<BandParameter> varied;
   for (const auto p : kAll) {
-    const auto& r = range_of(ranges, p);
+    const auto& r = ranges.of(p);
     if (!r) continue;
     const double x = nominal.value(p);
     if (!std::isfinite(r->lower) || !std::isfinite(r->upper) || r->lower > r->upper)
@@ -247,7 +252,7 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
   for (std::size_t mask = 0; mask < (std::size_t{1} << varied.size()); ++mask) {
     BandParameters b = nominal;
     for (std::size_t i = 0; i < varied.size(); ++i) {
-      const auto& r = *range_of(ranges, varied[i]);
+      const auto& r = *ranges.of(varied[i]);
       set(b, varied[i], (mask >> i) & 1U ? r.upper : r.lower);
     }
     if (const auto errors = validation_errors(with(problem, b)); !errors.empty())
@@ -265,7 +270,7 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
   bool complete = out.nominal.found;
 
   for (const auto p : varied) {
-    const auto& r = *range_of(ranges, p);
+    const auto& r = *ranges.of(p);
     ParameterSensitivity s;
     s.parameter = p;
     s.nominal = nominal.value(p);
