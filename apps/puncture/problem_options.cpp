@@ -49,6 +49,15 @@ MaterialLaw law_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   return Gent{f.j_lim};
 }
 
+// Throws InputError listing `errors` and the library's `validation`, each with its flag.
+void throw_if_invalid(std::vector<std::string> errors, const std::vector<std::string>& validation) {
+  for (const auto& e : validation) errors.push_back(with_flag(e));
+  if (errors.empty()) return;
+  std::string all = "invalid input:";
+  for (const auto& e : errors) all += "\n  " + e;
+  throw InputError(all);
+}
+
 }  // namespace
 
 void add_problem_options(CLI::App& app, ProblemFlags& f) {
@@ -145,12 +154,7 @@ Problem make_problem(const ProblemFlags& f) {
     p.stick = *stick;
   else
     errors.push_back(fmt::format("--stick: expected {}, got '{}'", kStickForms, f.stick));
-  for (const auto& e : validation_errors(p)) errors.push_back(with_flag(e));
-  if (!errors.empty()) {
-    std::string all = "invalid input:";
-    for (const auto& e : errors) all += "\n  " + e;
-    throw InputError(all);
-  }
+  throw_if_invalid(errors, validation_errors(p));
   return p;
 }
 
@@ -162,12 +166,7 @@ InflationProblem make_inflation_problem(const ProblemFlags& f) {
   p.material.shear_modulus_mpa = f.shear_modulus_mpa;
   p.material.law = law_of(f, errors);
   p.critical_i1 = f.critical_i1;
-  for (const auto& e : validation_errors(p)) errors.push_back(with_flag(e));
-  if (!errors.empty()) {
-    std::string all = "invalid input:";
-    for (const auto& e : errors) all += "\n  " + e;
-    throw InputError(all);
-  }
+  throw_if_invalid(errors, validation_errors(p));
   return p;
 }
 
