@@ -20,4 +20,8 @@ void append_material_errors(std::vector<std::string>& errors, const Material& ma
 void append_critical_i1_errors(std::vector<std::string>& errors, double critical_i1,
                                const MaterialLaw& law);
 
+// Throws std::invalid_argument: `heading` (e.g. "invalid problem:"), then each error on its own
+// indented line; nothing when there is none.
+void throw_if_invalid(const char* heading, const std::vector<std::string>& errors);
+
 }  // namespace puncture::detail

@@ -43,6 +43,13 @@ void append_critical_i1_errors(std::vector<std::string>& errors, double critical
                     critical_i1));
 }
 
+void throw_if_invalid(const char* heading, const std::vector<std::string>& errors) {
+  if (errors.empty()) return;
+  std::string all = heading;
+  for (const auto& e : errors) all += "\n  " + e;
+  throw std::invalid_argument(all);
+}
+
 }  // namespace detail
 
 std::vector<std::string> validation_errors(const Problem& p) {
@@ -86,11 +93,7 @@ std::vector<std::string> validation_errors(const Problem& p) {
 }
 
 void validate(const Problem& problem) {
-  const auto errors = validation_errors(problem);
-  if (errors.empty()) return;
-  std::string all = "invalid problem:";
-  for (const auto& e : errors) all += "\n  " + e;
-  throw std::invalid_argument(all);
+  detail::throw_if_invalid("invalid problem:", validation_errors(problem));
 }
 
 double force_scale_n(const Problem& p) {

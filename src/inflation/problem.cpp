@@ -2,7 +2,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <stdexcept>
 
 #include "membrane_validation.hpp"
 #include "puncture/inflation.hpp"
@@ -28,11 +27,7 @@ std::vector<std::string> validation_errors(const InflationProblem& p) {
 }
 
 void validate(const InflationProblem& problem) {
-  const auto errors = validation_errors(problem);
-  if (errors.empty()) return;
-  std::string all = "invalid inflation problem:";
-  for (const auto& e : errors) all += "\n  " + e;
-  throw std::invalid_argument(all);
+  detail::throw_if_invalid("invalid inflation problem:", validation_errors(problem));
 }
 
 double pressure_scale_mpa(const InflationProblem& p) {
