@@ -102,7 +102,12 @@ StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options
   return b;
 }
 
-PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& options) {
+namespace {
+
+// The puncture point; `at_switch` tells whether it is the sliding state at the stick -> slip
+// switch (the jump to sliding already reaches the critical I1).
+PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options, bool& at_switch) {
+  at_switch = false;
   PuncturePrediction out;
   if (const auto errors = validation_errors(p); !errors.empty()) {
     out.message = errors.front();
@@ -122,7 +127,6 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
   };
   std::optional<double> f_puncture;
   Stage stage = Stage::Slip;
-  bool at_switch = false;
   double slip_from_f = 0.0, slip_from_g = 3.0 - i1c;
   if (boundary.first_stage == Stage::Stick) {
     const double f_switch = boundary.switches ? boundary.force_stuck_n / scale : kInf;
@@ -200,6 +204,13 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
   if (at_switch) out.crack_location += " (at the stick -> slip switch)";
   out.crack_radius_mm = out.state.max_first_invariant_radius_mm;
   return out;
+}
+
+}  // namespace
+
+PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& options) {
+  bool at_switch = false;
+  return find_puncture(p, options, at_switch);
 }
 
 namespace {
@@ -315,16 +326,20 @@ bool follow_curve(const Problem& p, const Law& law, const detail::ScaledSettings
     return true;
   };
   const int n = curve.points;
+  // The last depth is end_depth itself (end_depth * (n - 1) / (n - 1) may miss it by an ulp).
+  auto grid = [&](int k) { return k == n - 1 ? end_depth : end_depth * k / (n - 1); };
   for (int k = 0; k < n; ++k) {
-    const double depth = end_depth * k / (n - 1);
-    const double prev_depth = k == 0 ? 0.0 : end_depth * (k - 1) / (n - 1);
-    if (has_switch && depth > boundary.depth_mm && prev_depth <= boundary.depth_mm) {
-      // Both sides of the switch, at the switch depth.
+    const double depth = grid(k);
+    const double prev_depth = k == 0 ? -1.0 : grid(k - 1);
+    if (has_switch && depth >= boundary.depth_mm && prev_depth < boundary.depth_mm) {
+      // Both sides of the switch, at the switch depth (which may be a grid depth: the last one
+      // when the membrane punctures as it starts sliding).
       if (!add_point(boundary.depth_mm, Stage::Stick)) return false;
       if (!add_point(boundary.depth_mm, Stage::Slip)) return false;
       out.stick_slip.force_sliding_n = out.points.back().force_n;
     }
-    if (!add_point(depth, stage_at(depth))) return false;
+    if (!(has_switch && depth == boundary.depth_mm) && !add_point(depth, stage_at(depth)))
+      return false;
     if (curve.progress) curve.progress(k + 1, n);
   }
   return true;
@@ -354,7 +369,8 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
     out.message = boundary.message;
     return out;
   }
-  out.puncture = predict_puncture(p, options);
+  bool puncture_at_switch = false;
+  out.puncture = find_puncture(p, options, puncture_at_switch);
   double end_depth = curve.max_depth_mm;
   if (end_depth <= 0.0) {
     if (!out.puncture.found) {
@@ -362,9 +378,11 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
       out.message = "cannot end the curve at puncture: " + out.puncture.message;
       return out;
     }
-    end_depth = out.puncture.depth_mm;
+    // A puncture at the switch is the sliding state at the switch depth (its own depth agrees
+    // to the solver's accuracy): the curve ends with the switch.
+    end_depth = puncture_at_switch ? boundary.depth_mm : out.puncture.depth_mm;
   }
-  const bool has_switch = boundary.switches && boundary.depth_mm < end_depth;
+  const bool has_switch = boundary.switches && boundary.depth_mm <= end_depth;
   if (has_switch) {
     out.stick_slip.occurs = true;
     out.stick_slip.depth_mm = boundary.depth_mm;

@@ -290,10 +290,11 @@ RC_GTEST_PROP(SolverProperties, LoadingCurveIsFiniteAndRisesWithinEachStage, ())
     // relative in force; I1 then to well within 1e-6), or, when the sliding state at the stick
     // -> slip switch is already beyond it, at the switch, with the largest I1 above it.
     const double i1 = c.puncture.state.max_first_invariant;
-    // predict_puncture says so in crack_location.  (LoadingCurve::stick_slip may then report
-    // no switch: the switch depth is the curve's last depth, not inside it.)
-    const bool at_switch =
-        c.puncture.crack_location.find("(at the stick -> slip switch)") != std::string::npos;
+    // The curve then ends with the switch: LoadingCurve::stick_slip reports it at the last
+    // depth, and the puncture's wording says so.
+    const bool at_switch = c.stick_slip.occurs && c.stick_slip.depth_mm == c.points.back().depth_mm;
+    RC_ASSERT(at_switch == (c.puncture.crack_location.find("(at the stick -> slip switch)") !=
+                            std::string::npos));
     RC_LOG() << fmt::format("puncture at {:.10g} mm, {}; switch: {} at {:.10g} mm\n",
                             c.puncture.depth_mm,
                             c.puncture.crack_location,

@@ -209,6 +209,88 @@ TEST(LoadingCurveStickSlip, ForceDropsAtSwitchToTheSlidingState) {
   record("sliding_force_relative_error", std::abs(sliding.force_n / sw.force_sliding_n - 1.0));
 }
 
+// A membrane held so long that the sliding state at the switch depth is already past the
+// critical I1 punctures at the switch: the curve then ends with the switch (the held and the
+// sliding state at the switch depth), and LoadingCurve::stick_slip says the switch occurs.  Held
+// until 45 mm or until 2 N (the default membrane slides to its puncture at 38 mm, 0.70 N).
+// Whether this is the case is checked independently: at the switch depth (stick_slip_boundary)
+// the held state (solve_at_depth) is below the critical I1 and the sliding one above it.  The
+// forces are each converged to 1e-8 relative, the switch depth is the boundary's own value and
+// the puncture's depth comes from the bracketing solve at that depth (TOMS 748 on the force to a
+// few ulps, with dF/ddepth ~ F/depth): 1e-9 relative is ample.
+class PunctureAtSwitch : public ::testing::TestWithParam<CurveCase> {};
+
+TEST_P(PunctureAtSwitch, CurveEndsWithTheSwitchAndReportsIt) {
+  const Problem& p = GetParam().problem;
+  const auto boundary = stick_slip_boundary(p);
+  ASSERT_EQ(boundary.status, Status::Converged) << boundary.message;
+  ASSERT_TRUE(boundary.switches);
+  const auto held = solve_at_depth(p, boundary.depth_mm, Stage::Stick);
+  const auto sliding = solve_at_depth(p, boundary.depth_mm, Stage::Slip);
+  ASSERT_TRUE(held.ok()) << held.message;
+  ASSERT_TRUE(sliding.ok()) << sliding.message;
+  ASSERT_LT(held.max_first_invariant, p.critical_i1);
+  ASSERT_GT(sliding.max_first_invariant, p.critical_i1);
+
+  const auto curve = loading_curve(p, {.points = 20});
+  ASSERT_TRUE(curve.ok()) << curve.message;
+  ASSERT_TRUE(curve.puncture.found) << curve.puncture.message;
+  EXPECT_EQ(curve.puncture.stage, Stage::Slip);
+  EXPECT_NEAR(curve.puncture.depth_mm, boundary.depth_mm, 1e-9 * boundary.depth_mm);
+  EXPECT_NEAR(curve.puncture.force_n, sliding.force_n, 1e-8 * sliding.force_n);
+
+  const auto& sw = curve.stick_slip;
+  EXPECT_TRUE(sw.occurs);
+  EXPECT_EQ(sw.depth_mm, boundary.depth_mm);
+  EXPECT_NEAR(sw.force_stuck_n, held.force_n, 1e-8 * held.force_n);
+  EXPECT_NEAR(sw.force_sliding_n, sliding.force_n, 1e-8 * sliding.force_n);
+
+  // The last two points: held, then sliding, both at the switch depth; the last one is the
+  // puncture.
+  ASSERT_GE(curve.points.size(), 2u);
+  const auto& before = curve.points[curve.points.size() - 2];
+  const auto& last = curve.points.back();
+  EXPECT_EQ(before.stage, Stage::Stick);
+  EXPECT_EQ(last.stage, Stage::Slip);
+  EXPECT_EQ(before.depth_mm, sw.depth_mm);
+  EXPECT_EQ(last.depth_mm, sw.depth_mm);
+  EXPECT_NEAR(before.force_n, held.force_n, 1e-8 * held.force_n);
+  EXPECT_NEAR(last.force_n, curve.puncture.force_n, 1e-8 * curve.puncture.force_n);
+  EXPECT_EQ(last.force_n, sw.force_sliding_n);
+  // Every point before the switch is held, and the switch is the only repeated depth.
+  for (std::size_t k = 0; k + 1 < curve.points.size(); ++k) {
+    EXPECT_EQ(curve.points[k].stage, Stage::Stick) << "point " << k;
+    if (k > 0 && k + 1 < curve.points.size() - 1)
+      EXPECT_GT(curve.points[k].depth_mm, curve.points[k - 1].depth_mm) << "point " << k;
+  }
+}
+
+// The same for every number of points: the last grid depth is the switch depth itself, never
+// an ulp below it (where it would be a held point, and the switch would be lost).
+TEST_P(PunctureAtSwitch, EveryGridEndsWithTheSwitch) {
+  const Problem& p = GetParam().problem;
+  for (int n = 2; n <= 24; ++n) {
+    SCOPED_TRACE(n);
+    const auto curve = loading_curve(p, {.points = n});
+    ASSERT_TRUE(curve.ok()) << curve.message;
+    ASSERT_TRUE(curve.stick_slip.occurs);
+    ASSERT_EQ(curve.points.size(), static_cast<std::size_t>(n + 1));
+    const auto& before = curve.points[n - 1];
+    const auto& last = curve.points[n];
+    EXPECT_EQ(before.stage, Stage::Stick);
+    EXPECT_EQ(last.stage, Stage::Slip);
+    EXPECT_EQ(before.depth_mm, curve.stick_slip.depth_mm);
+    EXPECT_EQ(last.depth_mm, curve.stick_slip.depth_mm);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    LoadingCurveStickSlip, PunctureAtSwitch,
+    ::testing::Values(
+        CurveCase{"HeldToDepth45", with_stick(paper_problem(), StickRule::Depth, 45.0)},
+        CurveCase{"HeldToForce2", with_stick(paper_problem(), StickRule::Force, 2.0)}),
+    curve_case_name);
+
 // Two independent routes to the puncture with the crack at the corner: the direct solve at the
 // corner (detail::puncture_at_corner: corner state from the capstan condition and I1 = I1c, then
 // a shooting on the force) and a root search of max I1 - I1c along the loading path
