@@ -104,7 +104,7 @@ Table verification_table(const VerificationReport& report) {
                "note"};
   for (const VerificationCheck& c : report.checks) {
     const bool skipped = !has_numbers(c);
-    auto number = [&](double x) { return skipped ? Cell{std::string{}} : Cell{x}; };
+    auto number = [&](double x) { return skipped ? std::nullopt : std::optional<double>(x); };
     t.rows.push_back({c.group,
                       c.quantity,
                       c.condition,

@@ -34,7 +34,7 @@ Table fields_table(const MembraneFields& fields);
 Table puncture_table(const PuncturePrediction& puncture);
 
 // One row per check: group, quantity, condition, shooting, second_method, relative_difference,
-// tolerance, verdict, note.  A skipped check has empty numbers (NaN: written empty or null).
+// tolerance, verdict, note.  A skipped check has no numbers (written empty).
 Table verification_table(const VerificationReport& report);
 
 // A number cell that holds no number.
