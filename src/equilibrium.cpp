@@ -1,5 +1,6 @@
 #include "puncture/equilibrium.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -70,9 +71,18 @@ ScaledSolution solve_scaled(const Problem& problem, double f, Stage stage,
   if (f == 0.0) {
     ScaledSolution flat;
     flat.status = Status::Converged;
-    flat.r_corner = flat.r_top =
-        problem.geometry.indenter_radius_mm / problem.geometry.clamp_radius_mm;
+    const double a = problem.geometry.indenter_radius_mm / problem.geometry.clamp_radius_mm;
+    flat.r_corner = flat.r_top = a;
     flat.configuration = Configuration::Unloaded;
+    // The rest of the flat membrane is Part I, unstretched, from the indenter's edge to the
+    // clamp: sampled like a loaded Part I (at least field_points steps, both ends included).
+    if (options.record_fields) {
+      const int n = std::max(1, options.field_points);
+      for (int k = 0; k <= n; ++k) {
+        const double r = k == n ? 1.0 : a + (1.0 - a) * k / n;
+        flat.part_one.push_back({r, 0.0, 1.0, 1.0, 0.0});
+      }
+    }
     return flat;
   }
   const auto settings = scaled_settings(problem, options);

@@ -1,6 +1,6 @@
-// Limits with known answers: the frictionless indenter (no capstan jump, constant vertical force
-// along the side, puncture force proportional to the indenter's radius) and large friction,
-// where the sliding solution tends to the held (stick) one.
+// Limits with known answers: zero load (the flat membrane), the frictionless indenter (no capstan
+// jump, constant vertical force along the side, puncture force proportional to the indenter's
+// radius) and large friction, where the sliding solution tends to the held (stick) one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +15,60 @@
 
 namespace puncture::test {
 namespace {
+
+// Zero load, asked for by depth or by force, in either stage and for every law: the flat,
+// unstretched membrane over its whole extent, from the centre (R = 0) to the clamp (R = A), the
+// part under the tip labelled 3 and the rest 1, with at least SolverOptions::field_points
+// samples of Part I like a loaded state.  Every value is exact for the flat membrane (stretches
+// 1, so s1 = s2 = 0 and I1 = 3 up to one rounding each).
+TEST(ZeroLoad, FieldsCoverTheWholeFlatMembrane) {
+  constexpr double kRoundOff = 1e-14;
+  const SolverOptions options;
+  for (const MaterialLaw law :
+       {MaterialLaw{Gent{125.0}}, MaterialLaw{NeoHookean{}}, MaterialLaw{MooneyRivlin{0.2}}}) {
+    const Problem p = paper_problem(law);
+    const double a = p.geometry.indenter_radius_mm, big_a = p.geometry.clamp_radius_mm;
+    for (const Stage stage : {Stage::Stick, Stage::Slip}) {
+      for (const bool by_depth : {true, false}) {
+        SCOPED_TRACE(fmt::format("{}, {} stage, by {}",
+                                 p.material.law.index(),
+                                 to_string(stage),
+                                 by_depth ? "depth" : "force"));
+        const auto e = by_depth ? solve_at_depth(p, 0.0, stage) : solve_at_force(p, 0.0, stage);
+        ASSERT_TRUE(e.ok()) << e.message;
+        EXPECT_EQ(e.configuration, Configuration::Unloaded);
+        EXPECT_EQ(e.force_n, 0.0);
+        EXPECT_EQ(e.depth_mm, 0.0);
+        const auto& m = e.fields;
+        ASSERT_GT(m.size(), 0u);
+        EXPECT_EQ(m.reference_radius_mm.front(), 0.0);
+        EXPECT_NEAR(m.reference_radius_mm.back(), big_a, kRoundOff * big_a);
+        EXPECT_GE(part_indices(m, 1).size(), static_cast<std::size_t>(options.field_points));
+        EXPECT_TRUE(part_indices(m, 2).empty());
+        for (std::size_t i = 0; i < m.size(); ++i) {
+          SCOPED_TRACE(i);
+          const double r_ref = m.reference_radius_mm[i];
+          if (i > 0) EXPECT_GE(r_ref, m.reference_radius_mm[i - 1]);
+          // Under the tip (R <= a) part 3, beyond it part 1; R = a is the boundary of both.
+          if (r_ref < a * (1.0 - kRoundOff)) EXPECT_EQ(m.part[i], 3);
+          if (r_ref > a * (1.0 + kRoundOff)) EXPECT_EQ(m.part[i], 1);
+          if (i > 0) EXPECT_LE(m.part[i], m.part[i - 1]) << "3 from the centre, then 1";
+          EXPECT_NEAR(m.radius_mm[i], r_ref, kRoundOff * big_a);
+          EXPECT_EQ(m.deflection_mm[i], 0.0);
+          EXPECT_EQ(m.slope_rad[i], 0.0);
+          EXPECT_NEAR(m.radial_stretch[i], 1.0, kRoundOff);
+          EXPECT_NEAR(m.hoop_stretch[i], 1.0, kRoundOff);
+          EXPECT_NEAR(m.thickness_stretch[i], 1.0, kRoundOff);
+          EXPECT_NEAR(m.radial_stress_mpa[i], 0.0, kRoundOff * p.material.shear_modulus_mpa);
+          EXPECT_NEAR(m.hoop_stress_mpa[i], 0.0, kRoundOff * p.material.shear_modulus_mpa);
+          EXPECT_NEAR(m.first_invariant[i], 3.0, kRoundOff);
+          EXPECT_EQ(m.contact_pressure_mpa[i], 0.0);
+          EXPECT_EQ(m.friction_traction_mpa[i], 0.0);
+        }
+      }
+    }
+  }
+}
 
 // mu' = 0 below (f = 0.05) and above (f = 0.5) the Part II onset (f = 0.080).
 struct FrictionlessCase {
