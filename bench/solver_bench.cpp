@@ -5,6 +5,9 @@
 //   BM_EquilibriumAtDepth  one equilibrium at a prescribed depth (nested bracketing)
 //   BM_PunctureDefault     the puncture point alone
 //   BM_LoadingCurveDefault the loading curve, 200 depth points from zero to puncture
+//   BM_LoadingCurveStick.. the same with a stick stage: held until 0.3 N (the switch is one
+//                          solve at that force), or until the edge tension reaches 0.02 N/mm
+//                          (the switch is a root search over the force)
 //   BM_FiniteElements...   the second method (finite_element.hpp), 128 quadratic elements:
 //                          held at 20 mm (a plain minimisation, continuation from flat) and
 //                          frictionless at 20 mm (side wrapped: the departure is searched)
@@ -64,6 +67,29 @@ void BM_LoadingCurveDefault(benchmark::State& state) {
   state.counters["points"] = static_cast<double>(points);
 }
 BENCHMARK(BM_LoadingCurveDefault)->Unit(benchmark::kMillisecond);
+
+// A curve with a stick stage: the switch located by the stick rule, then both sides of it.
+void loading_curve_with_stick(benchmark::State& state, StickRule rule, double threshold) {
+  Problem problem;
+  problem.stick = {rule, threshold};
+  CurveOptions curve;
+  curve.points = 200;
+  std::size_t points = 0;
+  for (auto _ : state) {
+    const auto result = loading_curve(problem, curve);
+    if (!result.ok()) state.SkipWithError(result.message.c_str());
+    points = result.points.size();
+  }
+  state.counters["points"] = static_cast<double>(points);
+}
+void BM_LoadingCurveStickForce(benchmark::State& state) {
+  loading_curve_with_stick(state, StickRule::Force, 0.3);
+}
+BENCHMARK(BM_LoadingCurveStickForce)->Unit(benchmark::kMillisecond);
+void BM_LoadingCurveStickEdgeTension(benchmark::State& state) {
+  loading_curve_with_stick(state, StickRule::EdgeTension, 0.02);
+}
+BENCHMARK(BM_LoadingCurveStickEdgeTension)->Unit(benchmark::kMillisecond);
 
 void BM_FiniteElementsHeld(benchmark::State& state) {
   Problem problem;

@@ -53,14 +53,20 @@ std::string crack_location(const detail::ScaledSolution& sol) {
   return "Part I, off the indenter";
 }
 
-}  // namespace
+// The stick -> slip boundary with the held state at the switch (when it switches), which the
+// puncture search needs too: the loading curve locates it once for both.
+struct SwitchPoint {
+  StageBoundary boundary;
+  std::optional<detail::ScaledSolution> held;
+};
 
-StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options) {
-  StageBoundary b;
+SwitchPoint locate_switch(const Problem& p, const SolverOptions& options) {
+  SwitchPoint out;
+  StageBoundary& b = out.boundary;
   if (const auto errors = validation_errors(p); !errors.empty()) {
     b.status = Status::InvalidInput;
     b.message = errors.front();
-    return b;
+    return out;
   }
   const auto o = without_fields(options);
   const double scale = force_scale_n(p);
@@ -68,10 +74,10 @@ StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options
   switch (p.stick.rule) {
     case StickRule::None:
       b.first_stage = Stage::Slip;
-      return b;
+      return out;
     case StickRule::Always:
       b.first_stage = Stage::Stick;
-      return b;
+      return out;
     default:
       break;
   }
@@ -95,18 +101,27 @@ StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options
     b.status = at_switch ? at_switch->status : Status::NoConvergence;
     b.message = "the stick stage cannot reach its switch point: " +
                 (at_switch ? at_switch->message : std::string("no force meets the criterion"));
-    return b;
+    return out;
   }
   b.depth_mm = at_switch->depth * big_a;
   b.force_stuck_n = at_switch->f * scale;
-  return b;
+  out.held = std::move(at_switch);
+  return out;
+}
+
+}  // namespace
+
+StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options) {
+  return locate_switch(p, options).boundary;
 }
 
 namespace {
 
-// The puncture point; `at_switch` tells whether it is the sliding state at the stick -> slip
-// switch (the jump to sliding already reaches the critical I1).
-PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options, bool& at_switch) {
+// The puncture point, given the problem's stick -> slip switch (locate_switch with the same
+// options); `at_switch` tells whether it is the sliding state at the switch (the jump to
+// sliding already reaches the critical I1).
+PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
+                                 const SwitchPoint& switch_point, bool& at_switch) {
   at_switch = false;
   PuncturePrediction out;
   if (const auto errors = validation_errors(p); !errors.empty()) {
@@ -117,7 +132,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   const double scale = force_scale_n(p);
   const double big_a = p.geometry.clamp_radius_mm;
   const double i1c = p.critical_i1;
-  const auto boundary = stick_slip_boundary(p, o);
+  const StageBoundary& boundary = switch_point.boundary;
   if (boundary.status != Status::Converged) {
     out.message = boundary.message;
     return out;
@@ -132,7 +147,8 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
     const double f_switch = boundary.switches ? boundary.force_stuck_n / scale : kInf;
     bool punctures_stuck = !boundary.switches;
     if (boundary.switches) {
-      const auto s = detail::solve_scaled(p, f_switch, Stage::Stick, o);
+      const auto s = switch_point.held ? *switch_point.held
+                                       : detail::solve_scaled(p, f_switch, Stage::Stick, o);
       punctures_stuck = s.ok() && over_critical(s) >= 0.0;
     }
     if (punctures_stuck) {
@@ -210,7 +226,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
 
 PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& options) {
   bool at_switch = false;
-  return find_puncture(p, options, at_switch);
+  return find_puncture(p, options, locate_switch(p, without_fields(options)), at_switch);
 }
 
 namespace {
@@ -363,14 +379,15 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
   const auto o = without_fields(options);
   const double scale = force_scale_n(p);
   const double big_a = p.geometry.clamp_radius_mm;
-  const auto boundary = stick_slip_boundary(p, o);
+  const auto switch_point = locate_switch(p, o);
+  const StageBoundary& boundary = switch_point.boundary;
   if (boundary.status != Status::Converged) {
     out.status = boundary.status;
     out.message = boundary.message;
     return out;
   }
   bool puncture_at_switch = false;
-  out.puncture = find_puncture(p, options, puncture_at_switch);
+  out.puncture = find_puncture(p, options, switch_point, puncture_at_switch);
   double end_depth = curve.max_depth_mm;
   if (end_depth <= 0.0) {
     if (!out.puncture.found) {
