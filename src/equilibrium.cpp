@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "reported_failure.hpp"
 #include "scaled_problem.hpp"
 
 namespace puncture {
@@ -279,8 +280,10 @@ Equilibrium solve_at_force(const Problem& problem, double force_n, Stage stage,
   if (!std::isfinite(force_n) || force_n < 0.0)
     return invalid("force must be a finite number >= 0 N, got " + std::to_string(force_n));
   const double f = force_n / force_scale_n(problem);
-  return detail::to_physical(
-      problem, detail::solve_scaled(problem, f, stage, options), stage, options);
+  return detail::reporting_failures<Equilibrium>([&] {
+    return detail::to_physical(
+        problem, detail::solve_scaled(problem, f, stage, options), stage, options);
+  });
 }
 
 Equilibrium solve_at_depth(const Problem& problem, double depth_mm, Stage stage,
@@ -290,8 +293,10 @@ Equilibrium solve_at_depth(const Problem& problem, double depth_mm, Stage stage,
   if (!std::isfinite(depth_mm) || depth_mm < 0.0)
     return invalid("depth must be a finite number >= 0 mm, got " + std::to_string(depth_mm));
   const double d = depth_mm / problem.geometry.clamp_radius_mm;
-  return detail::to_physical(
-      problem, detail::solve_scaled_at_depth(problem, d, stage, options), stage, options);
+  return detail::reporting_failures<Equilibrium>([&] {
+    return detail::to_physical(
+        problem, detail::solve_scaled_at_depth(problem, d, stage, options), stage, options);
+  });
 }
 
 }  // namespace puncture

@@ -249,9 +249,23 @@ ScaledSolution ForceSolver<Law>::assemble(Configuration c, double f, double p, b
         const auto y_r = step_or_advance(side, y_prev, r_prev, r, s_.integration);
         return y_r ? corner_gap(r, *y_r) : -1.0;
       };
+      // The step that met the side brackets the corner; near locking (a trial that cannot be
+      // integrated) it may not: then there is no corner here, a status rather than Boost's throw.
+      const double gap_hit = gap_at(r_hit), gap_prev = gap_at(r_prev);
+      if (!(gap_hit * gap_prev <= 0.0)) {
+        sol.status = Status::BeyondLocking;
+        sol.message = "the corner of Part II could not be located (the material locks near it)";
+        return sol;
+      }
       std::uintmax_t iterations = 100;
-      const auto bracket = boost::math::tools::toms748_solve(
-          gap_at, r_hit, r_prev, boost::math::tools::eps_tolerance<double>(50), iterations);
+      const auto bracket =
+          boost::math::tools::toms748_solve(gap_at,
+                                            r_hit,
+                                            r_prev,
+                                            gap_hit,
+                                            gap_prev,
+                                            boost::math::tools::eps_tolerance<double>(50),
+                                            iterations);
       r_corner = 0.5 * (bracket.first + bracket.second);
       corner_state = step_or_advance(side, y_prev, r_prev, r_corner, s_.integration);
       if (!corner_state ||
@@ -392,9 +406,17 @@ std::optional<ScaledSolution> ForceSolver<Law>::puncture_at_corner(double i1c) c
       const auto y_r = step_or_advance(side, y_prev, r_prev, r, s_.integration);
       return y_r ? q(r, *y_r) : 1.0;
     };
+    const double q_prev = q_at(r_prev), q_top = q_at(r_top);
+    if (!(q_prev * q_top <= 0.0)) return std::nullopt;  // no top in the step (near locking)
     std::uintmax_t iterations = 100;
-    const auto bracket = boost::math::tools::toms748_solve(
-        q_at, r_prev, r_top, boost::math::tools::eps_tolerance<double>(50), iterations);
+    const auto bracket =
+        boost::math::tools::toms748_solve(q_at,
+                                          r_prev,
+                                          r_top,
+                                          q_prev,
+                                          q_top,
+                                          boost::math::tools::eps_tolerance<double>(50),
+                                          iterations);
     return s_.a / (0.5 * (bracket.first + bracket.second));
   };
   // With R s1 unchanged up the side (no friction, ring balance) the force is R s1 at the corner

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "depth_newton.hpp"
+#include "reported_failure.hpp"
 #include "scaled_problem.hpp"
 #include "shooting.hpp"
 
@@ -112,7 +113,8 @@ SwitchPoint locate_switch(const Problem& p, const SolverOptions& options) {
 }  // namespace
 
 StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options) {
-  return locate_switch(p, options).boundary;
+  return detail::reporting_failures<StageBoundary>(
+      [&] { return locate_switch(p, options).boundary; });
 }
 
 namespace {
@@ -225,8 +227,10 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
 }  // namespace
 
 PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& options) {
-  bool at_switch = false;
-  return find_puncture(p, options, locate_switch(p, without_fields(options)), at_switch);
+  return detail::reporting_failures<PuncturePrediction>([&] {
+    bool at_switch = false;
+    return find_puncture(p, options, locate_switch(p, without_fields(options)), at_switch);
+  });
 }
 
 namespace {
@@ -363,8 +367,10 @@ bool follow_curve(const Problem& p, const Law& law, const detail::ScaledSettings
 
 }  // namespace
 
-LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
-                           const SolverOptions& options) {
+namespace {
+
+LoadingCurve unguarded_loading_curve(const Problem& p, const CurveOptions& curve,
+                                     const SolverOptions& options) {
   LoadingCurve out;
   if (const auto errors = validation_errors(p); !errors.empty()) {
     out.status = Status::InvalidInput;
@@ -438,6 +444,14 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
   }
   out.status = Status::Converged;
   return out;
+}
+
+}  // namespace
+
+LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
+                           const SolverOptions& options) {
+  return detail::reporting_failures<LoadingCurve>(
+      [&] { return unguarded_loading_curve(p, curve, options); });
 }
 
 }  // namespace puncture

@@ -157,5 +157,26 @@ TEST(FieldDensity, RecordedFieldsAtAnyDensity) {
   }
 }
 
+// Found by the property tests (a random seed): a thin, soft Mooney-Rivlin membrane with a large
+// friction and the printed Eq. (18), whose Part II search handed Boost's TOMS 748 an interval that
+// did not bracket the corner, and the exception escaped the loading curve.  Now the steps that do
+// not bracket are reported and the curve reaches the puncture (the critical I1 at its end).
+TEST(NoThrow, PartTwoSearchThatDoesNotBracketIsAStatus) {
+  Problem p;
+  p.geometry.indenter_radius_mm = 0.25;
+  p.geometry.thickness_mm = 0.02;
+  p.material.shear_modulus_mpa = 0.005;
+  p.material.law = MooneyRivlin{0.095803};
+  p.friction = 3.84775;
+  p.critical_i1 = 145.79356;
+  p.part_two_equation = PartTwoEquation::PaperEq18;
+  LoadingCurve curve;
+  ASSERT_NO_THROW(curve = loading_curve(p));
+  ASSERT_TRUE(curve.ok()) << curve.message;
+  ASSERT_TRUE(curve.puncture.found) << curve.puncture.message;
+  // predict_puncture's tolerance on the critical I1 (1e-10 relative shooting, 1e-8 here).
+  EXPECT_NEAR(curve.puncture.state.max_first_invariant, p.critical_i1, 1e-8 * p.critical_i1);
+}
+
 }  // namespace
 }  // namespace puncture::test
