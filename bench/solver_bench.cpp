@@ -54,8 +54,10 @@ void BM_PunctureDefault(benchmark::State& state) {
 }
 BENCHMARK(BM_PunctureDefault)->Unit(benchmark::kMillisecond);
 
-void BM_LoadingCurveDefault(benchmark::State& state) {
-  const Problem problem;
+// The loading curve, 200 depth points to puncture, with a stick rule (none: the default).
+void loading_curve_benchmark(benchmark::State& state, StickCriterion stick) {
+  Problem problem;
+  problem.stick = stick;
   CurveOptions curve;
   curve.points = 200;
   std::size_t points = 0;
@@ -66,28 +68,17 @@ void BM_LoadingCurveDefault(benchmark::State& state) {
   }
   state.counters["points"] = static_cast<double>(points);
 }
+
+void BM_LoadingCurveDefault(benchmark::State& state) { loading_curve_benchmark(state, {}); }
 BENCHMARK(BM_LoadingCurveDefault)->Unit(benchmark::kMillisecond);
 
 // A curve with a stick stage: the switch located by the stick rule, then both sides of it.
-void loading_curve_with_stick(benchmark::State& state, StickRule rule, double threshold) {
-  Problem problem;
-  problem.stick = {rule, threshold};
-  CurveOptions curve;
-  curve.points = 200;
-  std::size_t points = 0;
-  for (auto _ : state) {
-    const auto result = loading_curve(problem, curve);
-    if (!result.ok()) state.SkipWithError(result.message.c_str());
-    points = result.points.size();
-  }
-  state.counters["points"] = static_cast<double>(points);
-}
 void BM_LoadingCurveStickForce(benchmark::State& state) {
-  loading_curve_with_stick(state, StickRule::Force, 0.3);
+  loading_curve_benchmark(state, {StickRule::Force, 0.3});
 }
 BENCHMARK(BM_LoadingCurveStickForce)->Unit(benchmark::kMillisecond);
 void BM_LoadingCurveStickEdgeTension(benchmark::State& state) {
-  loading_curve_with_stick(state, StickRule::EdgeTension, 0.02);
+  loading_curve_benchmark(state, {StickRule::EdgeTension, 0.02});
 }
 BENCHMARK(BM_LoadingCurveStickEdgeTension)->Unit(benchmark::kMillisecond);
 

@@ -83,10 +83,18 @@ Mesh build_mesh(Layout layout, const Scaled& s, const FeOptions& options,
 }
 
 // Reference radius of node i of a part whose ends are at `start` and `end`.
-double node_radius(const MeshPart& part, int order, int i, double start, double end) {
-  const double xi = double(i) / (part.elements * order);
-  return part.logarithmic ? start * std::pow(end / start, xi) : start + xi * (end - start);
+double node_radius(bool logarithmic, int intervals, int i, double start, double end) {
+  const double xi = double(i) / intervals;
+  return logarithmic ? start * std::pow(end / start, xi) : start + xi * (end - start);
 }
+
+// Where the largest I1 is looked for in each element: both ends and the quadrature points.
+const std::array<double, 7> kSamplePoints = [] {
+  std::array<double, 7> etas{-1.0, 1.0};
+  for (std::size_t k = 0; k < fe::gauss_points().size(); ++k)
+    etas[k + 2] = fe::gauss_points()[k].first;
+  return etas;
+}();
 
 // The converged state in physical units.
 FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::VectorXd& x,
@@ -123,9 +131,7 @@ FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::Vector
     std::array<const Slot*, fe::kMaxLocal> slots;
     for (int e = 0; e < part.elements; ++e) {
       const fe::ElementPlace place = fe::gather(mesh, part, e, x, values, slots);
-      std::vector<double> etas{-1.0, 1.0};
-      for (const auto& [eta, w] : fe::gauss_points()) etas.push_back(eta);
-      for (double eta : etas) {
+      for (double eta : kSamplePoints) {
         double l1, l2, radius, weight;
         if (!fe::stretches_at(place, values, eta, l1, l2, radius, weight)) continue;
         const double i1 = first_invariant(l1, l2);
@@ -145,8 +151,8 @@ FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::Vector
 double corner_radial_slope(const FeState& state) {
   for (const FePart& part : state.parts)
     if (part.part == 1) {
-      const double dR = node_radius(MeshPart{1, true, part.elements, {}, {}, {}, {}},
-                                    state.order,
+      const double dR = node_radius(part.logarithmic,
+                                    part.elements * state.order,
                                     1,
                                     part.start_radius_mm,
                                     part.end_radius_mm) -
@@ -169,7 +175,8 @@ Eigen::VectorXd starting_guess(const Mesh& mesh, const Scaled& s, const FeState*
   for (const MeshPart& part : mesh.parts) {
     const double start = fe::value_of(part.start, x), end = fe::value_of(part.end, x);
     for (std::size_t i = 0; i < part.r.size(); ++i) {
-      const double R = node_radius(part, mesh.order, int(i), start, end);
+      const double R =
+          node_radius(part.logarithmic, part.elements * mesh.order, int(i), start, end);
       double r = R, z = s.depth;
       std::optional<fe::PointFields> old;
       if (previous)

@@ -151,6 +151,23 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
     p[i] = *v;
   }
   const double scale = pressure_scale_mpa(problem);
+  // The extremum at pole stretch `at` (its state started from the scanned pressure `guess`);
+  // false, with `out` saying why, when that state cannot be solved.
+  auto record = [&](ExtremumKind kind, double at, double slope, double curvature, double guess) {
+    PressureExtremum e;
+    e.kind = kind;
+    e.pressure_slope_mpa = scale * slope;
+    e.curvature_mpa = scale * curvature;
+    e.state = detail::to_physical(problem, detail::solve_inflation(law, at, options, guess));
+    if (!e.state.ok()) {
+      out.status = e.state.status;
+      out.message = fmt::format(
+          "the extremum at pole stretch {:g} could not be solved: {}", at, e.state.message);
+      return false;
+    }
+    out.extrema.push_back(std::move(e));
+    return true;
+  };
   try {
     for (int i = 1; i < n; ++i) {
       const double left = p[i] - p[i - 1], right = p[i + 1] - p[i];
@@ -176,18 +193,12 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
             d, lo, hi, d_lo, d_hi, boost::math::tools::eps_tolerance<double>(40), iterations);
         at = 0.5 * (bracket.first + bracket.second);
       }
-      PressureExtremum e;
-      e.kind = left > 0.0 ? ExtremumKind::Maximum : ExtremumKind::Minimum;
-      e.pressure_slope_mpa = scale * d(at);
-      e.curvature_mpa = scale * detail::second_derivative(pressure, at, h);
-      e.state = detail::to_physical(problem, detail::solve_inflation(law, at, options, p[i]));
-      if (!e.state.ok()) {
-        out.status = e.state.status;
-        out.message = fmt::format(
-            "the extremum at pole stretch {:g} could not be solved: {}", at, e.state.message);
+      if (!record(left > 0.0 ? ExtremumKind::Maximum : ExtremumKind::Minimum,
+                  at,
+                  d(at),
+                  detail::second_derivative(pressure, at, h),
+                  p[i]))
         return out;
-      }
-      out.extrema.push_back(std::move(e));
     }
     // An extremum inside the last interval, [l[n-1], l[n]], changes no sign of the scanned
     // differences when the pressure at the end is still on the same side as at l[n-1] (a
@@ -207,18 +218,12 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
         const auto bracket = boost::math::tools::toms748_solve(
             d, lo, hi, d_lo, d_hi, boost::math::tools::eps_tolerance<double>(40), iterations);
         const double at = 0.5 * (bracket.first + bracket.second);
-        PressureExtremum e;
-        e.kind = last > 0.0 ? ExtremumKind::Maximum : ExtremumKind::Minimum;
-        e.pressure_slope_mpa = scale * d(at);
-        e.curvature_mpa = scale * detail::backward_second_derivative(pressure, at, h);
-        e.state = detail::to_physical(problem, detail::solve_inflation(law, at, options, p[n]));
-        if (!e.state.ok()) {
-          out.status = e.state.status;
-          out.message = fmt::format(
-              "the extremum at pole stretch {:g} could not be solved: {}", at, e.state.message);
+        if (!record(last > 0.0 ? ExtremumKind::Maximum : ExtremumKind::Minimum,
+                    at,
+                    d(at),
+                    detail::backward_second_derivative(pressure, at, h),
+                    p[n]))
           return out;
-        }
-        out.extrema.push_back(std::move(e));
       }
     }
   } catch (const detail::FailedSolve& f) {

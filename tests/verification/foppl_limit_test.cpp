@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "verification/foppl_membrane.hpp"
 #include "puncture/equilibrium.hpp"
+#include "verification/foppl_membrane.hpp"
 
 namespace puncture {
 namespace {
