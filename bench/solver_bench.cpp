@@ -14,10 +14,10 @@
 // Compare them as ratios to the baseline: the machines are noisy, the ratios much less so.
 #include <benchmark/benchmark.h>
 
-#include "force_solver.hpp"
+#include "indentation/force_solver.hpp"
 #include "puncture/finite_element.hpp"
 #include "puncture/loading_curve.hpp"
-#include "scaled_problem.hpp"
+#include "indentation/scaled_problem.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <optional>
 
-#include "integrate.hpp"
+#include "numerics/integrate.hpp"
 #include "puncture/membrane_stress.hpp"
 
 namespace puncture::detail {

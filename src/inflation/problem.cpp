@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "membrane_validation.hpp"
+#include "mechanics/membrane_validation.hpp"
 #include "puncture/inflation.hpp"
 
 namespace puncture {

@@ -1,6 +1,6 @@
 // One inflated equilibrium at a given pole stretch: shooting on the pressure from the pole's
 // regular start to the clamp condition lambda2(1) = 1, with Boost's TOMS 748.
-#include "shooting.hpp"
+#include "numerics/shooting.hpp"
 
 #include <fmt/format.h>
 
@@ -12,7 +12,7 @@
 
 #include "inflation/inflation_ode.hpp"
 #include "inflation/scaled_inflation.hpp"
-#include "interior_maximum.hpp"
+#include "numerics/interior_maximum.hpp"
 #include "puncture/calibration.hpp"
 
 namespace puncture::detail {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "scaled_problem.hpp"
+#include "indentation/scaled_problem.hpp"
 #include "solver_test_support.hpp"
 
 namespace puncture::test {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "membrane_validation.hpp"
+#include "mechanics/membrane_validation.hpp"
 
 namespace puncture {
 

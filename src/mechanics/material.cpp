@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "inverse_stretch.hpp"
+#include "mechanics/inverse_stretch.hpp"
 
 namespace puncture {
 

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <optional>
 
-#include "force_solver.hpp"
+#include "indentation/force_solver.hpp"
 
 namespace puncture::detail {
 

@@ -7,9 +7,9 @@
 #include <limits>
 #include <tuple>
 
-#include "interior_maximum.hpp"
-#include "inverse_stretch.hpp"
-#include "shooting.hpp"
+#include "numerics/interior_maximum.hpp"
+#include "mechanics/inverse_stretch.hpp"
+#include "numerics/shooting.hpp"
 
 namespace puncture::detail {
 

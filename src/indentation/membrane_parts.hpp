@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "integrate.hpp"
+#include "numerics/integrate.hpp"
 #include "puncture/membrane_stress.hpp"
 #include "puncture/problem.hpp"
 

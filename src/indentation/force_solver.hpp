@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "membrane_parts.hpp"
+#include "indentation/membrane_parts.hpp"
 #include "puncture/equilibrium.hpp"
 
 namespace puncture::detail {
@@ -127,4 +127,4 @@ class ForceSolver {
 
 }  // namespace puncture::detail
 
-#include "force_solver_impl.hpp"
+#include "indentation/force_solver_impl.hpp"

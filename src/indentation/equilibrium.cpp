@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "reported_failure.hpp"
-#include "scaled_problem.hpp"
+#include "indentation/reported_failure.hpp"
+#include "indentation/scaled_problem.hpp"
 
 namespace puncture {
 

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <limits>
 
-#include "depth_newton.hpp"
-#include "reported_failure.hpp"
-#include "scaled_problem.hpp"
-#include "shooting.hpp"
+#include "indentation/depth_newton.hpp"
+#include "indentation/reported_failure.hpp"
+#include "indentation/scaled_problem.hpp"
+#include "numerics/shooting.hpp"
 
 namespace puncture {
 

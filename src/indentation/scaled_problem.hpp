@@ -1,6 +1,6 @@
 #pragma once
 // Conversion between the user's Problem (mm, N, MPa) and the solver's normalised variables.
-#include "force_solver.hpp"
+#include "indentation/force_solver.hpp"
 #include "puncture/equilibrium.hpp"
 
 namespace puncture::detail {
