@@ -14,10 +14,10 @@
 // Compare them as ratios to the baseline: the machines are noisy, the ratios much less so.
 #include <benchmark/benchmark.h>
 
-#include "indentation/force_solver.hpp"
+#include "indentation/dispatch.hpp"
+#include "indentation/scaled_problem.hpp"
 #include "puncture/finite_element.hpp"
 #include "puncture/loading_curve.hpp"
-#include "indentation/scaled_problem.hpp"
 
 namespace {
 
@@ -27,12 +27,12 @@ void BM_PartOneIntegration(benchmark::State& state) {
   const Problem problem;
   SolverOptions options;
   options.record_fields = false;
-  const auto settings = detail::scaled_settings(problem, options);
   const Gent& law = std::get<Gent>(problem.material.law);
-  const detail::ForceSolver<Gent> solver(law, settings);
-  const auto sol = solver.slip(0.2);
+  const detail::IndentationShooting<detail::FlatPunchContact<Gent>> shooting(
+      law, detail::shooting_settings(options), detail::flat_punch_settings(problem));
+  const auto sol = shooting.solve(Stage::Slip, 0.2);
   for (auto _ : state)
-    benchmark::DoNotOptimize(solver.assemble(sol.configuration, sol.f, sol.parameter, false));
+    benchmark::DoNotOptimize(shooting.assemble(sol.configuration, sol.f, sol.parameter, false));
 }
 BENCHMARK(BM_PartOneIntegration)->Unit(benchmark::kMicrosecond);
 

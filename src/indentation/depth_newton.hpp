@@ -1,8 +1,8 @@
 #pragma once
 // Equilibrium at a prescribed depth in a known configuration: Newton's method on the pair
 // (log f, log(p - p0)) of the force and the shooting parameter above its floor p0
-// (ForceSolver::parameter_floor; near zero load both f and p - 1 vanish as powers of the depth,
-// so relative steps suit them), with residuals (clamp condition, depth), one integration per
+// (the contact model's parameter_floor; near zero load both f and p - 1 vanish as powers of the
+// depth, so relative steps suit them), with residuals (clamp condition, depth), one integration per
 // iteration.  The Jacobian is taken by finite differences and reused from point to point along
 // a loading curve (a chord method) until the convergence slows down, so that a point started from
 // a good extrapolation of the previous ones costs three or four integrations.  Used for speed
@@ -11,15 +11,15 @@
 #include <cmath>
 #include <optional>
 
-#include "indentation/force_solver.hpp"
+#include "indentation/scaled_solution.hpp"
 
 namespace puncture::detail {
 
-template <class Law>
+// Shooting: an IndentationShooting (its assemble() and parameter_floor()).
+template <class Shooting>
 class DepthNewton {
  public:
-  DepthNewton(const ForceSolver<Law>& solver, double residual_tol)
-      : solver_(solver), tol_(residual_tol) {}
+  DepthNewton(const Shooting& solver, double residual_tol) : solver_(solver), tol_(residual_tol) {}
 
   // Forget the Jacobian (a new configuration starts).
   void reset() { have_jacobian_ = false; }
@@ -105,7 +105,7 @@ class DepthNewton {
     return solver_.assemble(c, std::exp(x[0]), floor_ + std::exp(x[1]), false);
   }
 
-  const ForceSolver<Law>& solver_;
+  const Shooting& solver_;
   double tol_;
   double floor_ = 1.0;
   Eigen::PartialPivLU<Eigen::Matrix2d> lu_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "indentation/dispatch.hpp"
 #include "indentation/reported_failure.hpp"
 #include "indentation/scaled_problem.hpp"
 
@@ -57,92 +58,24 @@ std::string to_string(Status s) {
 
 namespace detail {
 
-ScaledSettings scaled_settings(const Problem& p, const SolverOptions& o) {
-  return {p.geometry.indenter_radius_mm / p.geometry.clamp_radius_mm,
-          p.friction,
-          p.part_two_equation,
-          {o.integration_rel_tol, o.integration_abs_tol, o.max_steps},
-          o.shooting_tol,
-          o.max_shooting_iterations,
-          o.field_points};
-}
-
 ScaledSolution solve_scaled(const Problem& problem, double f, Stage stage,
                             const SolverOptions& options) {
-  if (f == 0.0) {
-    ScaledSolution flat;
-    flat.status = Status::Converged;
-    const double a = problem.geometry.indenter_radius_mm / problem.geometry.clamp_radius_mm;
-    flat.r_corner = flat.r_top = a;
-    flat.configuration = Configuration::Unloaded;
-    // The rest of the flat membrane is Part I, unstretched, from the indenter's edge to the
-    // clamp: sampled like a loaded Part I (at least field_points steps, both ends included).
-    if (options.record_fields) {
-      const int n = std::max(1, options.field_points);
-      for (int k = 0; k <= n; ++k) {
-        const double r = k == n ? 1.0 : a + (1.0 - a) * k / n;
-        flat.part_one.push_back({r, 0.0, 1.0, 1.0, 0.0});
-      }
-    }
-    return flat;
-  }
-  const auto settings = scaled_settings(problem, options);
-  return std::visit(
-      [&](const auto& law) {
-        const ForceSolver solver(law, settings);
-        return stage == Stage::Stick ? solver.stick(f) : solver.slip(f);
-      },
-      problem.material.law);
+  return with_shooting(
+      problem, options, [&](const auto& shooting) { return shooting.solve(stage, f); });
 }
 
 ScaledSolution solve_scaled_at_depth(const Problem& problem, double d, Stage stage,
                                      const SolverOptions& options, double f_guess) {
-  if (d == 0.0) return solve_scaled(problem, 0.0, stage, options);
-  SolverOptions inner = options;
-  inner.record_fields = false;
-  ScaledSolution last_failure;
-  auto residual = [&](double f) -> std::optional<double> {
-    auto sol = solve_scaled(problem, f, stage, inner);
-    if (!sol.ok()) {
-      last_failure = std::move(sol);
-      return std::nullopt;
-    }
-    return sol.depth - d;
-  };
-  const double step = f_guess > 0.0 ? 0.5 * f_guess : 0.1;
-  const auto f = shoot_increasing(residual,
-                                  0.0,
-                                  -d,
-                                  std::numeric_limits<double>::infinity(),
-                                  options.max_shooting_iterations,
-                                  step);
-  if (!f) {
-    if (last_failure.status == Status::Converged) last_failure.status = Status::NoConvergence;
-    if (last_failure.message.empty())
-      last_failure.message = "no force gives the requested depth";
-    else
-      last_failure.message = "the requested depth cannot be reached: " + last_failure.message;
-    return last_failure;
-  }
-  return solve_scaled(problem, *f, stage, options);
+  return with_shooting(problem, options, [&](const auto& shooting) {
+    return shooting.solve_at_depth(stage, d, f_guess);
+  });
 }
 
-double max_first_invariant(const ScaledSolution& sol) { return max_first_invariant_of(sol); }
-
-std::optional<ScaledSolution> puncture_at_corner(const Problem& problem,
-                                                 const SolverOptions& options) {
-  const auto settings = scaled_settings(problem, options);
-  return std::visit(
-      [&](const auto& law) {
-        return ForceSolver(law, settings).puncture_at_corner(problem.critical_i1);
-      },
-      problem.material.law);
-}
-
-std::optional<ScaledSolution> part_two_onset(const Problem& problem, const SolverOptions& options) {
-  const auto settings = scaled_settings(problem, options);
-  return std::visit([&](const auto& law) { return ForceSolver(law, settings).part_two_onset(); },
-                    problem.material.law);
+std::optional<ScaledSolution> direct_puncture(const Problem& problem,
+                                              const SolverOptions& options) {
+  return with_shooting(problem, options, [&](const auto& shooting) {
+    return shooting.contact().direct_puncture(shooting, problem.critical_i1);
+  });
 }
 
 namespace {

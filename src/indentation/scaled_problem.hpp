@@ -1,17 +1,18 @@
 #pragma once
-// Conversion between the user's Problem (mm, N, MPa) and the solver's normalised variables.
-#include "indentation/force_solver.hpp"
+// Conversion between the user's Problem (mm, N, MPa) and the solver's normalised variables, and
+// single solves of a Problem (each dispatched once to its shooting: dispatch.hpp).
+#include <optional>
+
+#include "indentation/scaled_solution.hpp"
 #include "puncture/equilibrium.hpp"
 
 namespace puncture::detail {
-
-ScaledSettings scaled_settings(const Problem& problem, const SolverOptions& options);
 
 // Physical Equilibrium (with fields when options.record_fields) from a normalised solution.
 Equilibrium to_physical(const Problem& problem, const ScaledSolution& sol, Stage stage,
                         const SolverOptions& options);
 
-// Solve at normalised force f in the given stage, dispatching on the material law once.
+// Solve at normalised force f in the given stage.
 ScaledSolution solve_scaled(const Problem& problem, double f, Stage stage,
                             const SolverOptions& options);
 
@@ -20,13 +21,10 @@ ScaledSolution solve_scaled_at_depth(const Problem& problem, double d, Stage sta
                                      const SolverOptions& options, double f_guess = 0.0);
 
 // Largest I1 anywhere in the membrane, Part III included.
-double max_first_invariant(const ScaledSolution& sol);
+inline double max_first_invariant(const ScaledSolution& sol) { return max_first_invariant_of(sol); }
 
-// See ForceSolver::part_two_onset.
-std::optional<ScaledSolution> part_two_onset(const Problem& problem, const SolverOptions& options);
-
-// See ForceSolver::puncture_at_corner.
-std::optional<ScaledSolution> puncture_at_corner(const Problem& problem,
-                                                 const SolverOptions& options);
+// The puncture solved directly by the contact model, when it knows one (the flat punch: the
+// crack at the corner with Part II; FlatPunchContact::direct_puncture).
+std::optional<ScaledSolution> direct_puncture(const Problem& problem, const SolverOptions& options);
 
 }  // namespace puncture::detail

@@ -292,7 +292,7 @@ INSTANTIATE_TEST_SUITE_P(
     curve_case_name);
 
 // Two independent routes to the puncture with the crack at the corner: the direct solve at the
-// corner (detail::puncture_at_corner: corner state from the capstan condition and I1 = I1c, then
+// corner (detail::direct_puncture: corner state from the capstan condition and I1 = I1c, then
 // a shooting on the force) and a root search of max I1 - I1c along the loading path
 // (detail::solve_scaled at increasing force, bracketed by a scan and refined with TOMS 748 to
 // ~1e-14).  Each solve meets the clamp to 1e-10; max I1 is located to the integration accuracy:
@@ -324,7 +324,7 @@ TEST_P(PunctureRoutes, DirectCornerSolveAgreesWithPathSearch) {
   const Problem& p = GetParam().problem;
   SolverOptions o;
   o.record_fields = false;
-  const auto direct = detail::puncture_at_corner(p, o);
+  const auto direct = detail::direct_puncture(p, o);
   ASSERT_TRUE(direct.has_value()) << "the crack is expected at the corner";
   ASSERT_TRUE(direct->ok()) << direct->message;
   EXPECT_EQ(direct->configuration, Configuration::SlipWithPartTwo);

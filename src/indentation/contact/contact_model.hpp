@@ -1,0 +1,54 @@
+#pragma once
+// What the shooting asks of an indenter's contact model (the flat punch's is
+// contact/flat_punch.hpp).  The shooting (indentation/shooting.hpp) integrates the free membrane,
+// Part I, from where it leaves the indenter to the clamp and shoots on one parameter; everything
+// about the indenter lives in the contact model:
+//
+//   using law_type; using Settings;          the material law; the contact's own settings
+//   Contact(const FreePart<Law>&, const Settings&)
+//   double parameter_floor(Configuration)    every shooting parameter of the configuration
+//                                            exceeds it (the depth Newton works on p - floor)
+//   std::optional<FreeStart> free_start(Configuration, f, p)
+//                                            where and how Part I starts at force f and
+//                                            parameter p; empty outside the material's domain
+//   bool attach(Configuration, const FreeStart&, p, record, ScaledSolution&)
+//                                            the parts in contact, after Part I was integrated:
+//                                            their stretches, height and largest I1; false (with
+//                                            status and message set) when they cannot be solved
+//   ShootingPlan plan(Stage, f, counted_residual)
+//                                            which configuration the stage is in at force f and
+//                                            the bracket of its parameter
+//   ScaledSolution unloaded(bool record)     the state at zero force
+//   Configuration configuration(Stage, bool past_change)
+//                                            the configuration of a stage before / after the
+//                                            change along the sliding branch (slip_change)
+//   std::optional<ScaledSolution> slip_change(const Shooting&)
+//                                            where the sliding configuration changes, if it does
+//   std::optional<ScaledSolution> direct_puncture(const Shooting&, double critical_i1)
+//                                            a puncture solved directly, when the contact knows
+//                                            one (else the loading path is searched)
+//   std::string crack_location(const ScaledSolution&)   where the largest I1 is, in words
+//
+// Adding an indenter: a contact model with these members, an alternative in the dispatch
+// (indentation/dispatch.hpp); the shooting and the loading-curve driver are unchanged.
+#include <limits>
+#include <string>
+
+#include "puncture/equilibrium.hpp"
+
+namespace puncture::detail {
+
+// How the shooting at one force proceeds: the configuration and a bracket start (lo, g_lo < 0)
+// with an upper cap of the parameter, or why there is no shooting (status and message).
+struct ShootingPlan {
+  Status status = Status::Converged;
+  std::string message;
+  Configuration configuration = Configuration::Unloaded;
+  double lo = 0.0;
+  double g_lo = 0.0;
+  double cap = std::numeric_limits<double>::infinity();
+  std::string no_root_message;  // what to say when the bracketing finds no root
+  bool ok() const { return status == Status::Converged; }
+};
+
+}  // namespace puncture::detail

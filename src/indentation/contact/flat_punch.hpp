@@ -1,0 +1,556 @@
+#pragma once
+// The sharp flat-ended cylindrical punch of the paper: its contact model (contact_model.hpp).
+// Three membrane parts: Part III under the flat tip (homogeneous, equibiaxial), Part II wrapped
+// on the cylindrical side (with Coulomb friction), and the free Part I.  Configurations:
+//   Stick               membrane held at the indenter's edge, Part III unstretched
+//   SlipWithoutPartTwo  Part III stretched, capstan across the corner, Part I from the corner
+//   SlipWithPartTwo     Part III, the corner wrapped by pi/2, Part II on the side, then Part I
+// and their shooting parameters p:
+//   Stick               lambda1 at the indenter's edge (R = a, lambda2 = 1)
+//   SlipWithoutPartTwo  the Part III stretch Lambda
+//   SlipWithPartTwo     lambda2 where Part I leaves the indenter's side (> a / A; it can be
+//                       below 1 when material from beyond the indenter's radius climbs its side)
+// Both slip parameters equal the same stretch where Part II appears, so p is continuous there.
+#include <fmt/format.h>
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <tuple>
+
+#include "indentation/contact/contact_model.hpp"
+#include "indentation/contact/flat_punch_side.hpp"
+#include "indentation/free_part.hpp"
+#include "mechanics/inverse_stretch.hpp"
+#include "numerics/interior_maximum.hpp"
+#include "numerics/shooting.hpp"
+
+namespace puncture::detail {
+
+inline constexpr double kHalfPi = boost::math::constants::half_pi<double>();
+
+// the capstan ratio); pi/2 when kappa >= exp(mu pi/2).  The left side increases on [0, pi/2].
+inline double corner_slope(double kappa, double mu) {
+  if (kappa >= std::exp(mu * kHalfPi)) return kHalfPi;
+  std::uintmax_t iterations = 100;
+  return boost::math::tools::newton_raphson_iterate(
+      [&](double phi) {
+        const double e = std::exp(mu * phi);
+        return std::make_pair(std::sin(phi) * e - kappa, (std::cos(phi) + mu * std::sin(phi)) * e);
+      },
+      0.5 * std::asin(std::min(kappa, 1.0)),
+      0.0,
+      kHalfPi,
+      52,
+      iterations);
+}
+
+struct FlatPunchSettings {
+  double a;   // indenter radius / clamp radius
+  double mu;  // Coulomb friction coefficient on the indenter
+  PartTwoEquation equation;
+};
+
+template <class Law>
+class FlatPunchContact {
+ public:
+  using law_type = Law;
+  using Settings = FlatPunchSettings;
+
+  FlatPunchContact(const FreePart<Law>& part_one, const FlatPunchSettings& settings)
+      : part_one_(part_one), law_(part_one.law()), s_(settings), max_i1_(part_one.max_i1()) {}
+
+  // Every configuration's parameter exceeds this floor: 1 for the stretches at the edge and of
+  // Part III, a / A for the hoop stretch a / R at the top of Part II (R < A).
+  double parameter_floor(Configuration configuration) const {
+    return configuration == Configuration::SlipWithPartTwo ? s_.a : 1.0;
+  }
+
+  std::optional<FreeStart> free_start(Configuration c, double f, double p) const {
+    if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
+    switch (c) {
+      case Configuration::Stick: {
+        // R = a, lambda2 = 1, lambda1 = p; R s1 sin(phi) = f fixes the slope.
+        const double rs1 = s_.a * membrane_stress(law_, p, 1.0).s1;
+        // rs1 < f by round-off only at the vertical exit, where t = 0 (near lambda1 = 1 the
+        // inversion loses digits to cancellation, hence the loose bound).
+        if (!(rs1 >= f * (1.0 - 1e-8)) || first_invariant(p, 1.0) >= max_i1_) return std::nullopt;
+        const double t = std::sqrt(std::max(0.0, (rs1 - f) * (rs1 + f)));
+        return FreeStart{
+            {t, p, 1.0, 0.0}, s_.a, std::atan2(f, t), std::numeric_limits<double>::infinity()};
+      }
+      case Configuration::SlipWithoutPartTwo: {
+        // Part III stretch p: the corner material sits at R = a / p; the capstan law and the
+        // vertical balance give the exit slope.
+        const double r0 = s_.a / p;
+        const double s_eq = membrane_stress(law_, p, p).s1;
+        if (!(s_eq > 0.0) || !std::isfinite(s_eq) || first_invariant(p, p) >= max_i1_)
+          return std::nullopt;
+        const double kappa = f / (r0 * s_eq);
+        // Beyond exp(mu pi/2) the exit would have to be steeper than vertical: Part II exists.
+        if (kappa > std::exp(s_.mu * kHalfPi) * (1.0 + 1e-9)) return std::nullopt;
+        const double phi = corner_slope(kappa, s_.mu);
+        const double ratio = std::exp(s_.mu * phi);  // capstan: the outer side pulls harder
+        const auto l1 = invert_radial_stress(law_, s_eq * ratio, p, p);
+        if (!l1) return std::nullopt;
+        return FreeStart{{r0 * s_eq * ratio * std::cos(phi), *l1, p, 0.0}, r0, phi, ratio};
+      }
+      case Configuration::SlipWithPartTwo: {
+        // Part I leaves the side vertically at R = a / p: R s1 = f, t = 0.
+        if (!(p > s_.a)) return std::nullopt;  // the top must lie inside the clamp
+        const auto l1 = invert_radial_stress(law_, f * p / s_.a, p);
+        if (!l1) return std::nullopt;
+        return FreeStart{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPi, std::exp(s_.mu * kHalfPi)};
+      }
+      case Configuration::Unloaded:
+        break;
+    }
+    return std::nullopt;
+  }
+
+  // Parts III and II once Part I is integrated from `st`: the corner, Part III's stretch and, with
+  // Part II, its march down the side to where the capstan condition with Part III holds.
+  bool attach(Configuration c, const FreeStart& st, double p, bool record,
+              ScaledSolution& sol) const {
+    if (c == Configuration::Stick) {
+      sol.r_corner = s_.a;
+      return true;
+    }
+    if (c == Configuration::SlipWithoutPartTwo) {
+      sol.r_corner = st.r0;
+      sol.part_three_stretch = p;
+      return true;
+    }
+    // March down the side from the top of Part II until the capstan condition with Part III
+    // holds (Eq. 22 with Eq. 20): s1(lambda1, a/R) = exp(mu pi/2) s_eq(a/R).
+    const double capstan = st.ratio;
+    // Where Part III would be locked (or the stresses are not finite) the corner lies higher up:
+    // the gap counts as negative there.
+    auto corner_gap = [&](double r, const PartTwoState& y) {
+      const double l2 = s_.a / r;
+      if (!(first_invariant(l2, l2) < max_i1_)) return -1.0;
+      const double gap =
+          membrane_stress(law_, y[0], l2).s1 - capstan * membrane_stress(law_, l2, l2).s1;
+      return std::isfinite(gap) ? gap : -1.0;
+    };
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, max_i1_};
+    PartTwoState y{st.state[1], 0.0};
+    double r_prev = st.r0, r_hit = -1.0;
+    PartTwoState y_prev = y;
+    InteriorMaximum<PartTwoState> side_max;
+    const double r_floor = s_.a / locking_radial_stretch(law_, 1.0);
+    IntegrationSettings integration = part_one_.settings().integration;
+    if (record) integration.max_step = st.r0 / std::max(1, part_one_.settings().field_points);
+    const bool ok =
+        integrate_part(side,
+                       y,
+                       st.r0,
+                       std::isfinite(r_floor) ? r_floor : 1e-6 * s_.a,
+                       integration,
+                       [&](double r, const PartTwoState& state) {
+                         if (corner_gap(r, state) <= 0.0) {
+                           r_hit = r;
+                           return false;
+                         }
+                         r_prev = r;
+                         y_prev = state;
+                         if (record) sol.part_two.push_back({r, state[0], state[1]});
+                         side_max.observe(r, state, first_invariant(state[0], s_.a / r));
+                         return true;
+                       });
+    if (!ok || r_hit < 0.0) {
+      sol.status = Status::BeyondLocking;
+      sol.message = std::isfinite(max_i1_)
+                        ? "Part II reaches the locking stretch before meeting the capstan condition"
+                        : "Part II never meets the capstan condition: the force is beyond the "
+                          "membrane's limit load";
+      return false;
+    }
+    // Where the corner is: at the top when the capstan condition holds there already (exactly at
+    // the onset, to round-off: Part II of zero length; beyond that there is no Part II at this
+    // force and top stretch), else inside the last step, located by re-integrating adaptively
+    // from the last accepted state (near locking a single long step may leave the material's
+    // domain).  A trial that cannot be integrated lies past the corner, towards locking: the gap
+    // counts as negative there.
+    double r_corner = st.r0;
+    std::optional<PartTwoState> corner_state = y_prev;
+    const auto gap_scale = [&](double r) {
+      return 1e-8 * capstan * membrane_stress(law_, s_.a / r, s_.a / r).s1;
+    };
+    if (r_hit == st.r0) {
+      if (!(corner_gap(st.r0, y_prev) >= -0.1 * gap_scale(st.r0))) {
+        sol.message = "no Part II at this force and boundary stretch";
+        return false;
+      }
+    } else {
+      auto gap_at = [&](double r) {
+        const auto y_r = step_or_advance(side, y_prev, r_prev, r, part_one_.settings().integration);
+        return y_r ? corner_gap(r, *y_r) : -1.0;
+      };
+      // The step that met the side brackets the corner; near locking (a trial that cannot be
+      // integrated) it may not: then there is no corner here, a status rather than Boost's throw.
+      const double gap_hit = gap_at(r_hit), gap_prev = gap_at(r_prev);
+      if (!(gap_hit * gap_prev <= 0.0)) {
+        sol.status = Status::BeyondLocking;
+        sol.message = "the corner of Part II could not be located (the material locks near it)";
+        return false;
+      }
+      std::uintmax_t iterations = 100;
+      const auto bracket =
+          boost::math::tools::toms748_solve(gap_at,
+                                            r_hit,
+                                            r_prev,
+                                            gap_hit,
+                                            gap_prev,
+                                            boost::math::tools::eps_tolerance<double>(50),
+                                            iterations);
+      r_corner = 0.5 * (bracket.first + bracket.second);
+      corner_state =
+          step_or_advance(side, y_prev, r_prev, r_corner, part_one_.settings().integration);
+      if (!corner_state ||
+          !(std::abs(corner_gap(r_corner, *corner_state)) <= gap_scale(r_corner))) {
+        sol.status = Status::BeyondLocking;
+        sol.message = "the corner of Part II lies beyond the material's locking limit";
+        return false;
+      }
+    }
+    const PartTwoState corner = *corner_state;
+    IntegrationStepper<PartTwoState> rk;
+    if (record) sol.part_two.push_back({r_corner, corner[0], corner[1]});
+    // I1 along Part II: at the accepted steps and at the corner.
+    auto track = [&](double r, double i1) {  // on the side: current radius a
+      if (i1 > sol.max_i1) {
+        sol.max_i1 = i1;
+        sol.max_i1_r = r;
+        sol.max_i1_radius = s_.a;
+      }
+    };
+    track(r_corner, first_invariant(corner[0], s_.a / r_corner));
+    try {
+      const auto [i1, r, state] = side_max.refine(
+          [&](double ra, const PartTwoState& ya, double rb) {
+            PartTwoState out;
+            rk.do_step(side, ya, ra, out, rb - ra);
+            return out;
+          },
+          [&](double r, const PartTwoState& y) { return first_invariant(y[0], s_.a / r); });
+      track(r, i1);
+    } catch (const IntegrationFailure&) {
+      track(side_max.sampled().r, side_max.sampled().value);
+    }
+    sol.r_corner = r_corner;
+    sol.part_three_stretch = s_.a / r_corner;
+    sol.part_two_length = corner[1];
+    sol.depth += corner[1];
+    const double l3 = sol.part_three_stretch;
+    sol.edge_s1 = membrane_stress(law_, corner[0], l3).s1;
+    sol.tension_ratio = sol.edge_s1 / membrane_stress(law_, l3, l3).s1;
+    return true;
+  }
+
+  // The stick stage holds the membrane at the edge; the slip stage finds whether Part II exists.
+  template <class Residual>
+  ShootingPlan plan(Stage stage, double f, Residual&& counted) const {
+    return stage == Stage::Stick ? stick_plan(f, counted) : slip_plan(f, counted);
+  }
+
+  // The flat membrane: Part III under the tip, unstretched, and the rest Part I, from the
+  // indenter's edge to the clamp, sampled like a loaded Part I (at least field_points steps,
+  // both ends included).
+  ScaledSolution unloaded(bool record) const {
+    ScaledSolution flat;
+    flat.status = Status::Converged;
+    flat.r_corner = flat.r_top = s_.a;
+    flat.configuration = Configuration::Unloaded;
+    if (record) {
+      const int n = std::max(1, part_one_.settings().field_points);
+      for (int k = 0; k <= n; ++k) {
+        const double r = k == n ? 1.0 : s_.a + (1.0 - s_.a) * k / n;
+        flat.part_one.push_back({r, 0.0, 1.0, 1.0, 0.0});
+      }
+    }
+    return flat;
+  }
+
+  Configuration configuration(Stage stage, bool past_change) const {
+    if (stage == Stage::Stick) return Configuration::Stick;
+    return past_change ? Configuration::SlipWithPartTwo : Configuration::SlipWithoutPartTwo;
+  }
+
+  // Part III stretch at which Part I leaves the corner vertically (wrap angle pi/2) at force f.
+  std::optional<double> part_two_onset_stretch(double f) const {
+    // s_eq(L) / L = f exp(-mu pi/2) / a, increasing in L from 0 at L = 1.
+    const double target = f * std::exp(-s_.mu * kHalfPi) / s_.a;
+    auto g = [&](double l) -> std::optional<double> {
+      const double s = membrane_stress(law_, l, l).s1;
+      if (!std::isfinite(s) || first_invariant(l, l) >= max_i1_) return std::nullopt;
+      return s / l - target;
+    };
+    // g is undefined past the equibiaxial locking stretch; shoot_increasing treats that as beyond.
+    const double cap = locking_radial_stretch(law_, 1.0);
+    if (!std::isfinite(cap)) {
+      // Without locking s_eq / L may stay bounded (neo-Hookean: below 1): if the target is out of
+      // reach, no Part III stretch lets Part I leave the corner at or below vertical, and Part II
+      // exists at every stretch.
+      constexpr double kFar = 1e6;
+      if (const auto far = g(kFar); far && *far < 0.0)
+        return std::numeric_limits<double>::infinity();
+    }
+    const auto root = shoot_increasing(g, 1.0, -target, cap, 200);
+    if (!root || !g(*root)) return std::nullopt;
+    return root;
+  }
+
+  // Clamp residual of the Part I that leaves the corner vertically with no Part II: negative
+  // while Part II is absent, >= 0 once it exists.  Empty past locking.
+  std::optional<double> part_two_indicator(double f) const {
+    const auto onset = part_two_onset_stretch(f);
+    if (!onset) return std::nullopt;
+    if (std::isinf(*onset)) return 1.0;  // Part II at every stretch
+    // Part I leaving the corner vertically at the onset stretch: the SlipWithPartTwo start with a
+    // Part II of zero length (exactly R s1 = f, free of the round-off in the capstan balance).
+    return residual(Configuration::SlipWithPartTwo, f, *onset);
+  }
+
+  // The state where Part II appears in the slip stage (Part II of zero length); empty if it
+  // never appears before the material locks.
+  template <class Shooting>
+  std::optional<ScaledSolution> slip_change(const Shooting& shooting) const {
+    // The indicator rises through zero at the onset force.  Below it, Part I leaving the corner
+    // vertically turns back towards the axis (indicator kTurnedBack), so the sign change is found
+    // by bracketing, starting from a force far below any onset.
+    auto indicator = [&](double f) { return part_two_indicator(f); };
+    const double f_probe = 1e-4;
+    const auto g0 = indicator(f_probe);
+    if (!g0 || *g0 >= 0.0) return std::nullopt;
+    const auto f_on = shoot_increasing(indicator,
+                                       f_probe,
+                                       *g0,
+                                       std::numeric_limits<double>::infinity(),
+                                       part_one_.settings().max_iterations,
+                                       0.05);
+    if (!f_on) return std::nullopt;
+    const auto onset = part_two_onset_stretch(*f_on);
+    if (!onset) return std::nullopt;
+    // At the onset both slip configurations coincide; the one without Part II is assembled.
+    auto sol = shooting.assemble(Configuration::SlipWithoutPartTwo, *f_on, *onset, false);
+    if (!sol.integrated)
+      sol = shooting.assemble(Configuration::SlipWithPartTwo, *f_on, *onset, false);
+    if (!sol.integrated) return std::nullopt;
+    return sol;
+  }
+
+  // Puncture in the slip stage with Part II and the crack at the corner, where I1 = i1c.  There
+  // the corner's state is fixed by the capstan condition and I1 = i1c alone, whatever the force,
+  // so marching Part II up from it to where R s1 = f and shooting Part I on to the clamp leaves
+  // a one-parameter shooting in f.  Empty when the puncture is not of that kind (the caller then
+  // searches the loading path).
+  template <class Shooting>
+  std::optional<ScaledSolution> direct_puncture(const Shooting& shooting, double i1c) const {
+    const double capstan = std::exp(s_.mu * kHalfPi);
+    // Corner state: s1(lambda1, L) = capstan s_eq(L) and I1(lambda1, L) = i1c, increasing in L.
+    auto corner_l1 = [&](double l) -> std::optional<double> {
+      const double s_eq = membrane_stress(law_, l, l).s1;
+      if (!std::isfinite(s_eq) || first_invariant(l, l) >= max_i1_) return std::nullopt;
+      return invert_radial_stress(law_, capstan * s_eq, l, l);
+    };
+    auto excess = [&](double l) -> std::optional<double> {
+      const auto l1 = corner_l1(l);
+      if (!l1) return std::nullopt;
+      return first_invariant(*l1, l) - i1c;
+    };
+    const auto l3 =
+        shoot_increasing(excess, 1.0, 3.0 - i1c, locking_radial_stretch(law_, 1.0), 200);
+    if (!l3) return std::nullopt;
+    const auto l1_corner = corner_l1(*l3);
+    if (!l1_corner) return std::nullopt;
+    const double r_corner = s_.a / *l3;
+    const double q_corner = r_corner * membrane_stress(law_, *l1_corner, *l3).s1;  // R s1 there
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, max_i1_};
+    // Top of Part II for force f: march up from the corner until R s1 = f (Eq. 12 with phi = pi/2).
+    auto top_stretch = [&](double f) -> std::optional<double> {
+      PartTwoState y{*l1_corner, 0.0};
+      double r_top = -1.0, r_prev = r_corner;
+      PartTwoState y_prev = y;
+      auto q = [&](double r, const PartTwoState& state) {
+        return r * membrane_stress(law_, state[0], s_.a / r).s1 - f;
+      };
+      const bool ok = integrate_part(side,
+                                     y,
+                                     r_corner,
+                                     1.0,
+                                     part_one_.settings().integration,
+                                     [&](double r, const PartTwoState& state) {
+                                       if (q(r, state) >= 0.0) {
+                                         r_top = r;
+                                         return false;
+                                       }
+                                       r_prev = r;
+                                       y_prev = state;
+                                       return true;
+                                     });
+      if (!ok || r_top < 0.0 || r_top == r_corner) return std::nullopt;
+      // Inside the last step, re-integrated adaptively from its start; a trial that cannot be
+      // integrated (locking) counts as past the top.
+      auto q_at = [&](double r) {
+        const auto y_r = step_or_advance(side, y_prev, r_prev, r, part_one_.settings().integration);
+        return y_r ? q(r, *y_r) : 1.0;
+      };
+      const double q_prev = q_at(r_prev), q_top = q_at(r_top);
+      if (!(q_prev * q_top <= 0.0)) return std::nullopt;  // no top in the step (near locking)
+      std::uintmax_t iterations = 100;
+      const auto bracket =
+          boost::math::tools::toms748_solve(q_at,
+                                            r_prev,
+                                            r_top,
+                                            q_prev,
+                                            q_top,
+                                            boost::math::tools::eps_tolerance<double>(50),
+                                            iterations);
+      return s_.a / (0.5 * (bracket.first + bracket.second));
+    };
+    // With R s1 unchanged up the side (no friction, ring balance) the force is R s1 at the corner
+    // and the position of the top is left to the ordinary shooting at that force.
+    if (s_.mu == 0.0 && s_.equation == PartTwoEquation::RingBalance) {
+      auto sol = shooting.solve(Stage::Slip, q_corner);
+      if (!sol.ok() || std::abs(max_first_invariant_of(sol) - i1c) > 1e-7 * i1c)
+        return std::nullopt;
+      return sol;
+    }
+    // A larger force lifts the top of Part II, lowering its hoop stretch and so the clamp
+    // residual: shoot on minus the residual, from the force at which Part II has zero length.
+    auto g = [&](double f) -> std::optional<double> {
+      const auto top = top_stretch(f);
+      if (!top) return std::nullopt;
+      const auto r = residual(Configuration::SlipWithPartTwo, f, *top);
+      return r ? std::optional<double>(-*r) : std::nullopt;
+    };
+    const double f_lo = q_corner * (1.0 + 1e-9);
+    const auto g_lo = g(f_lo);
+    if (!g_lo || *g_lo >= 0.0) return std::nullopt;
+    const auto f = shoot_increasing(g,
+                                    f_lo,
+                                    *g_lo,
+                                    std::numeric_limits<double>::infinity(),
+                                    part_one_.settings().max_iterations,
+                                    0.25 * f_lo);
+    if (!f) return std::nullopt;
+    const auto top = top_stretch(*f);
+    if (!top) return std::nullopt;
+    auto sol = shooting.assemble(Configuration::SlipWithPartTwo, *f, *top, false);
+    // The march down must find the same corner, and the crack must sit there.
+    if (!sol.ok() || std::abs(sol.part_three_stretch - *l3) > 1e-7 * *l3 ||
+        std::abs(max_first_invariant_of(sol) - i1c) > 1e-7 * i1c)
+      return std::nullopt;
+    return sol;
+  }
+
+  std::string crack_location(const ScaledSolution& sol) const {
+    const double l3 = sol.part_three_stretch;
+    const double i1_tip = 2.0 * l3 * l3 + 1.0 / (l3 * l3 * l3 * l3);
+    if (i1_tip > sol.max_i1 * (1.0 + 1e-9)) return "Part III, under the indenter's tip";
+    const double tol = 1e-9;
+    if (std::abs(sol.max_i1_r - sol.r_corner) <= tol) {
+      std::string where = sol.configuration == Configuration::SlipWithPartTwo
+                              ? "Part II at the indenter's corner"
+                              : "Part I at the indenter's corner";
+      if (i1_tip >= sol.max_i1 * (1.0 - 1e-9))
+        where += " (without friction Part III, under the tip, is as stretched)";
+      return where;
+    }
+    if (sol.configuration == Configuration::SlipWithPartTwo && sol.max_i1_r < sol.r_top)
+      return "Part II, on the indenter's side";
+    return "Part I, off the indenter";
+  }
+
+ private:
+  std::optional<double> residual(Configuration c, double f, double p) const {
+    return part_one_.residual(f, free_start(c, f, p));
+  }
+
+  // Held at the edge: shoot on the edge stretch, from where Part I leaves the edge vertically.
+  template <class Residual>
+  ShootingPlan stick_plan(double f, Residual& counted) const {
+    ShootingPlan plan;
+    plan.configuration = Configuration::Stick;
+    // Lowest edge stretch: Part I leaves the edge vertically (R s1 = f).
+    auto l1_vertical = invert_radial_stress(law_, f / s_.a, 1.0);
+    if (!l1_vertical) {
+      plan.status = Status::BeyondLocking;
+      plan.message = "the force exceeds what the membrane at the indenter's edge can carry";
+      return plan;
+    }
+    // At tiny forces s1 ~ lambda1 - 1 loses its digits to cancellation and the inverse may fall
+    // an ulp short of carrying the force (then free_start() rejects the vertical exit): step up
+    // by ulps.
+    for (int k = 0; k < 1000 && s_.a * membrane_stress(law_, *l1_vertical, 1.0).s1 < f; ++k)
+      *l1_vertical = std::nextafter(*l1_vertical, 2.0 * *l1_vertical);
+    const double g0 = counted(Configuration::Stick, *l1_vertical).value_or(kBeyondDomain);
+    if (g0 >= 0.0) {
+      plan.status = Status::StickWrapsSide;
+      plan.message =
+          "at this force a membrane held at the indenter's edge would have to wrap its side";
+      return plan;
+    }
+    plan.lo = *l1_vertical;
+    plan.g_lo = g0;
+    plan.cap = locking_radial_stretch(law_, 1.0);
+    plan.no_root_message = "stick shooting found no edge stretch meeting the clamp condition";
+    return plan;
+  }
+
+  // Sliding: whether Part II exists decides the configuration and its parameter's bracket.
+  template <class Residual>
+  ShootingPlan slip_plan(double f, Residual& counted) const {
+    ShootingPlan plan;
+    const auto onset = part_two_onset_stretch(f);
+    if (!onset) {
+      plan.status = Status::BeyondLocking;
+      plan.message = "the force needs a stretch under the tip beyond the material's locking limit";
+      return plan;
+    }
+    const double g_onset = part_two_indicator(f).value_or(kBeyondDomain);
+    if (g_onset < 0.0) {
+      // Part I reaches the clamp with lambda2 < 1 even when it leaves the corner vertically, so
+      // a larger Part III stretch (and a flatter exit) is needed: no Part II.
+      plan.configuration = Configuration::SlipWithoutPartTwo;
+      plan.lo = *onset;
+      plan.g_lo = g_onset;
+      plan.cap = locking_radial_stretch(law_, 1.0);
+    } else {
+      // Part II exists: shoot on lambda2 where Part I leaves the side (between 1 and the onset).
+      // At the lowest top stretch, lambda2 -> a, Part I shrinks to the clamp and the residual
+      // tends to a - 1 < 0.  (Top stretches below 1 occur on soft laws at large loads: material
+      // from beyond the indenter's radius climbs its side, hoop-compressed but taut, s2 > 0.)
+      const double lowest = parameter_floor(Configuration::SlipWithPartTwo) * (1.0 + 1e-9);
+      const double g_low = counted(Configuration::SlipWithPartTwo, lowest).value_or(kBeyondDomain);
+      if (g_low >= 0.0) {
+        plan.status = Status::BeyondLocking;
+        plan.message = std::isfinite(max_i1_)
+                           ? "the force is beyond what the membrane can carry before the "
+                             "material locks"
+                           : "the force is beyond the membrane's limit load (this law's stress "
+                             "under the tip grows too slowly with stretch to carry it)";
+        return plan;
+      }
+      plan.configuration = Configuration::SlipWithPartTwo;
+      plan.lo = lowest;
+      plan.g_lo = g_low;
+      plan.cap = *onset;
+    }
+    plan.no_root_message =
+        fmt::format("slip shooting ({}) found no parameter meeting the clamp condition",
+                    to_string(plan.configuration));
+    return plan;
+  }
+
+  const FreePart<Law>& part_one_;
+  const Law& law_;
+  FlatPunchSettings s_;
+  double max_i1_;
+};
+
+}  // namespace puncture::detail

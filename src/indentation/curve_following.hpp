@@ -1,0 +1,212 @@
+#pragma once
+// The displacement-controlled loading curve for any indenter (a shooting, shooting.hpp): equally
+// spaced depths from zero to puncture, each by a Newton corrector (DepthNewton) from an
+// extrapolation of the previous points, across the stick -> slip switch and the contact model's
+// change of configuration on the sliding branch.
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "indentation/depth_newton.hpp"
+#include "indentation/puncture_search.hpp"
+#include "puncture/loading_curve.hpp"
+
+namespace puncture::detail {
+
+// Extrapolation of (f, p) to a new depth from the last converged points of a segment: the
+// predictor of the Newton corrector.  Near zero depth f ~ depth^3 and p - 1 ~ depth^2
+// (membrane theory), so it works with log f and log(p - p0) (p0 the parameter's floor) against
+// log depth: from one point with those powers, from two to four by Lagrange interpolation.
+struct Predictor {
+  std::vector<std::array<double, 3>> history;  // depth, f, parameter
+  bool usable() const { return !history.empty(); }
+  std::array<double, 2> at(double d, double floor) const {
+    const std::size_t n = history.size(), m = std::min<std::size_t>(n, 4);
+    if (n == 1) {
+      const auto& h = history.front();
+      const double ratio = d / h[0];
+      return {h[1] * ratio * ratio * ratio, floor + (h[2] - floor) * ratio * ratio};
+    }
+    std::array<double, 2> out{0.0, 0.0};
+    for (std::size_t i = n - m; i < n; ++i) {
+      double w = 1.0;
+      for (std::size_t j = n - m; j < n; ++j)
+        if (j != i) w *= std::log(d / history[j][0]) / std::log(history[i][0] / history[j][0]);
+      out[0] += w * std::log(history[i][1]);
+      out[1] += w * std::log(history[i][2] - floor);
+    }
+    return {std::exp(out[0]), floor + std::exp(out[1])};
+  }
+};
+
+// Fills out.points along the depth grid; false (with out.status/message) on failure.
+// `change`: where the sliding configuration changes (the contact model's slip_change), if it does.
+template <class Shooting>
+bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
+                  const StageBoundary& boundary, double end_depth, bool has_switch,
+                  const std::optional<ScaledSolution>& change, const CurveOptions& curve,
+                  LoadingCurve& out) {
+  const double scale = force_scale_n(p);
+  const double big_a = p.geometry.clamp_radius_mm;
+  const auto& contact = shooting.contact();
+  DepthNewton<Shooting> newton(shooting, curve_tol);
+  Predictor predictor;
+  Stage segment_stage = boundary.first_stage;
+  Configuration last_configuration = Configuration::Unloaded;
+  auto stage_at = [&](double depth) {
+    if (boundary.first_stage == Stage::Slip) return Stage::Slip;
+    if (!boundary.switches || depth <= boundary.depth_mm) return Stage::Stick;
+    return Stage::Slip;
+  };
+  auto expected_configuration = [&](double depth, Stage stage) {
+    return contact.configuration(
+        stage, out.part_two_onset_depth_mm && depth >= *out.part_two_onset_depth_mm);
+  };
+  auto add_point = [&](double depth, Stage stage) -> bool {
+    if (stage != segment_stage) {
+      predictor.history.clear();
+      newton.reset();
+      segment_stage = stage;
+    }
+    const double d = depth / big_a;
+    std::optional<ScaledSolution> sol;
+    if (d > 0.0 && !predictor.usable()) {
+      // Seed a new segment with one solve at a known force: a small one at the start of the
+      // curve (the power-law predictor carries it to the first depth), the held force at the
+      // stick -> slip switch.
+      const double f_seed = out.points.size() > 1 ? out.points.back().normalized_force : 1e-4;
+      const auto seed = shooting.solve(stage, f_seed);
+      if (seed.ok()) {
+        predictor.history = {{seed.depth, seed.f, seed.parameter}};
+        last_configuration = seed.configuration;
+      }
+    }
+    if (d > 0.0 && predictor.usable()) {
+      const Configuration c = expected_configuration(depth, stage);
+      auto guess = predictor.at(d, shooting.parameter_floor(c));
+      if (c != last_configuration) {
+        newton.reset();
+        if (c == contact.configuration(Stage::Slip, true) && change) {
+          // The new configuration starts where the old one ends (the flat punch: Part II starts
+          // with zero length at the onset, its top stretch from the onset Part III stretch),
+          // while the force keeps following the curve.
+          guess[1] = change->parameter;
+          predictor.history = {{change->depth, change->f, change->parameter}};
+        }
+      }
+      sol = newton.solve(c, d, guess[0], guess[1]);
+    }
+    if (!sol) {
+      newton.reset();
+      const double f_guess = predictor.history.empty() ? 0.0 : predictor.history.back()[1];
+      sol = shooting.solve_at_depth(stage, d, f_guess);
+    }
+    if (!sol->ok()) {
+      out.status = sol->status;
+      out.message =
+          fmt::format("at depth {:.6g} mm ({} stage): {}", depth, to_string(stage), sol->message);
+      return false;
+    }
+    if (sol->configuration != Configuration::Unloaded)
+      predictor.history.push_back({d, sol->f, sol->parameter});
+    last_configuration = sol->configuration;
+    CurvePoint pt;
+    pt.depth_mm = depth;
+    pt.force_n = sol->f * scale;
+    pt.normalized_force = sol->f;
+    pt.stage = stage;
+    pt.configuration = sol->configuration;
+    pt.part_three_stretch = sol->part_three_stretch;
+    pt.part_two_length_mm = sol->part_two_length * big_a;
+    pt.corner_slope_rad = sol->corner_slope;
+    pt.max_first_invariant = max_first_invariant(*sol);
+    out.points.push_back(pt);
+    return true;
+  };
+  const int n = curve.points;
+  // The last depth is end_depth itself (end_depth * (n - 1) / (n - 1) may miss it by an ulp).
+  auto grid = [&](int k) { return k == n - 1 ? end_depth : end_depth * k / (n - 1); };
+  for (int k = 0; k < n; ++k) {
+    const double depth = grid(k);
+    const double prev_depth = k == 0 ? -1.0 : grid(k - 1);
+    if (has_switch && depth >= boundary.depth_mm && prev_depth < boundary.depth_mm) {
+      // Both sides of the switch, at the switch depth (which may be a grid depth: the last one
+      // when the membrane punctures as it starts sliding).
+      if (!add_point(boundary.depth_mm, Stage::Stick)) return false;
+      if (!add_point(boundary.depth_mm, Stage::Slip)) return false;
+      out.stick_slip.force_sliding_n = out.points.back().force_n;
+    }
+    if (!(has_switch && depth == boundary.depth_mm) && !add_point(depth, stage_at(depth)))
+      return false;
+    if (curve.progress) curve.progress(k + 1, n);
+  }
+  return true;
+}
+
+// The curve of a valid problem; `shooting` (made with `options` without fields) serves every
+// solve, `options` makes the state at puncture physical.
+template <class Shooting>
+LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
+                               const CurveOptions& curve, const SolverOptions& options) {
+  LoadingCurve out;
+  const double scale = force_scale_n(p);
+  const double big_a = p.geometry.clamp_radius_mm;
+  const auto switch_point = locate_switch(p, shooting);
+  const StageBoundary& boundary = switch_point.boundary;
+  if (boundary.status != Status::Converged) {
+    out.status = boundary.status;
+    out.message = boundary.message;
+    return out;
+  }
+  bool puncture_at_switch = false;
+  out.puncture = find_puncture(p, options, shooting, switch_point, puncture_at_switch);
+  double end_depth = curve.max_depth_mm;
+  if (end_depth <= 0.0) {
+    if (!out.puncture.found) {
+      out.status = Status::NoConvergence;
+      out.message = "cannot end the curve at puncture: " + out.puncture.message;
+      return out;
+    }
+    // A puncture at the switch is the sliding state at the switch depth (its own depth agrees
+    // to the solver's accuracy): the curve ends with the switch.
+    end_depth = puncture_at_switch ? boundary.depth_mm : out.puncture.depth_mm;
+  }
+  const bool has_switch = boundary.switches && boundary.depth_mm <= end_depth;
+  if (has_switch) {
+    out.stick_slip.occurs = true;
+    out.stick_slip.depth_mm = boundary.depth_mm;
+    out.stick_slip.force_stuck_n = boundary.force_stuck_n;
+  }
+  // The change of configuration on the sliding branch (the flat punch: Part II appears); a
+  // membrane held past that depth slides straight into the changed configuration at the switch.
+  std::optional<ScaledSolution> onset;
+  if (boundary.first_stage == Stage::Slip || boundary.switches) {
+    onset = shooting.contact().slip_change(shooting);
+    if (onset) {
+      out.part_two_onset_depth_mm = onset->depth * big_a;
+      out.part_two_onset_force_n = onset->f * scale;
+      if (boundary.switches && onset->depth * big_a < boundary.depth_mm) {
+        out.part_two_onset_at_switch = true;
+        out.part_two_onset_depth_mm = boundary.depth_mm;
+        out.part_two_onset_force_n.reset();  // the sliding force at the switch, set below
+        onset.reset();
+      }
+    }
+  }
+  if (!follow_curve(
+          p, shooting, options.curve_tol, boundary, end_depth, has_switch, onset, curve, out))
+    return out;
+  if (out.part_two_onset_at_switch) {
+    if (out.stick_slip.occurs)
+      out.part_two_onset_force_n = out.stick_slip.force_sliding_n;
+    else  // the curve ends before the switch
+      out.part_two_onset_depth_mm.reset();
+  }
+  out.status = Status::Converged;
+  return out;
+}
+
+}  // namespace puncture::detail

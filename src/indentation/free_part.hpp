@@ -1,0 +1,109 @@
+#pragma once
+// The free membrane (Part I) from where it leaves the indenter to the clamp: integrated once for
+// a given start, with the clamp residual, the height climbed and the largest I1 along the way.
+// The contact model (indentation/contact/) supplies the start; the shooting varies it.
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "indentation/scaled_solution.hpp"
+#include "mechanics/free_membrane_ode.hpp"
+#include "numerics/interior_maximum.hpp"
+
+namespace puncture::detail {
+
+// Clamp residual given to a Part I whose meridian turns back towards the axis (t < 0, hoop
+// compression) before the clamp: the hoop stretch falls short, so the residual is negative.
+inline constexpr double kTurnedBack = -1.0;
+
+// Where and how Part I starts: its state at the reference radius r0, with the slope there and the
+// capstan ratio across the corner (infinite for a membrane held at the edge).
+struct FreeStart {
+  PartOneState state;
+  double r0;     // reference radius where Part I starts
+  double slope;  // slope there
+  double ratio;  // capstan ratio across the corner
+};
+
+struct FreePartRun {
+  bool ok = false;
+  bool turned_back = false;  // stopped where the meridian turned back towards the axis
+  double residual = 0.0;     // lambda2(A) - 1
+  double height = 0.0;
+  double max_i1 = 0.0;
+  double max_i1_r = 0.0;
+  double max_i1_radius = 0.0;  // current radius there
+};
+
+template <class Law>
+class FreePart {
+ public:
+  FreePart(const Law& law, const ShootingSettings& settings)
+      : law_(law), s_(settings), max_i1_(law.max_i1()) {}
+
+  const Law& law() const { return law_; }
+  const ShootingSettings& settings() const { return s_; }
+  double max_i1() const { return max_i1_; }
+
+  // Part I at force f from `start` to the clamp; with `samples`, the solution is sampled.
+  FreePartRun run(double f, const FreeStart& start, std::vector<PartOneSample>* samples) const {
+    FreePartRun run;
+    PartOneState x = start.state;
+    const double r0 = start.r0;
+    if (samples) samples->clear();
+    const PartOneSystem<Law> system{law_, f, max_i1_};
+    IntegrationSettings integration = s_.integration;
+    if (samples) integration.max_step = (1.0 - r0) / std::max(1, s_.field_points);
+    double last_l2 = x[2];
+    InteriorMaximum<PartOneState> i1_max;
+    run.ok = integrate_part(system, x, r0, 1.0, integration, [&](double r, const PartOneState& y) {
+      i1_max.observe(r, y, first_invariant(y[1], y[2]));
+      if (samples) samples->push_back({r, y[0], y[1], y[2], y[3]});
+      last_l2 = y[2];
+      if (y[0] < 0.0) {  // meridian turned back towards the axis: hoop stretch too small
+        run.turned_back = true;
+        return false;
+      }
+      return true;
+    });
+    // A Part I that fails (locks) on its way with the hoop stretch already below 1 has collapsed
+    // towards the axis: it belongs to the negative side of the clamp residual as well.
+    if (!run.ok && last_l2 < 1.0) run.turned_back = true;
+    if (run.ok) {
+      IntegrationStepper<PartOneState> rk;
+      auto found = i1_max.sampled();
+      try {
+        found = i1_max.refine(
+            [&](double ra, const PartOneState& xa, double rb) {
+              PartOneState out;
+              rk.do_step(system, xa, ra, out, rb - ra);
+              return out;
+            },
+            [](double, const PartOneState& y) { return first_invariant(y[1], y[2]); });
+      } catch (const IntegrationFailure&) {
+      }
+      run.max_i1 = found.value;
+      run.max_i1_r = found.r;
+      run.max_i1_radius = found.state[2] * found.r;  // r = lambda2 R
+    }
+    run.residual = run.turned_back ? kTurnedBack : x[2] - 1.0;
+    run.height = x[3];
+    return run;
+  }
+
+  // The clamp residual from `start`; empty when Part I can be integrated neither to the clamp
+  // nor to where it turns back (the material locks on the way).
+  std::optional<double> residual(double f, const std::optional<FreeStart>& start) const {
+    if (!start) return std::nullopt;
+    const auto r = run(f, *start, nullptr);
+    return r.ok || r.turned_back ? std::optional<double>(r.residual) : std::nullopt;
+  }
+
+ private:
+  const Law& law_;
+  ShootingSettings s_;
+  double max_i1_;
+};
+
+}  // namespace puncture::detail

@@ -1,0 +1,187 @@
+#pragma once
+// The puncture search along the loading path, for any indenter (a shooting, shooting.hpp): the
+// stick -> slip switch of the problem's stick rule, then the first force at which the largest I1
+// reaches the critical value (or the contact model's direct puncture solve).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "indentation/scaled_problem.hpp"
+#include "numerics/shooting.hpp"
+#include "puncture/loading_curve.hpp"
+
+namespace puncture::detail {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Smallest normalised force at which g(solution) >= 0 in `stage`, searching up from f_lo where it
+// is negative.  Failed solves (beyond locking) count as beyond the root.
+template <class Shooting, class Criterion>
+std::optional<double> first_force_where(const Shooting& shooting, Stage stage, double f_lo,
+                                        double g_lo, Criterion&& g) {
+  auto residual = [&](double f) -> std::optional<double> {
+    const auto sol = shooting.solve(stage, f);
+    if (!sol.ok()) return std::nullopt;
+    return g(sol);
+  };
+  return shoot_increasing(
+      residual, f_lo, g_lo, kInf, shooting.settings().max_iterations, std::max(0.25 * f_lo, 0.05));
+}
+
+// The stick -> slip boundary with the held state at the switch (when it switches), which the
+// puncture search needs too: the loading curve locates it once for both.
+struct SwitchPoint {
+  StageBoundary boundary;
+  std::optional<ScaledSolution> held;
+};
+
+template <class Shooting>
+SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
+  SwitchPoint out;
+  StageBoundary& b = out.boundary;
+  const double scale = force_scale_n(p);
+  const double big_a = p.geometry.clamp_radius_mm;
+  switch (p.stick.rule) {
+    case StickRule::None:
+      b.first_stage = Stage::Slip;
+      return out;
+    case StickRule::Always:
+      b.first_stage = Stage::Stick;
+      return out;
+    default:
+      break;
+  }
+  b.first_stage = Stage::Stick;
+  b.switches = true;
+  std::optional<ScaledSolution> at_switch;
+  if (p.stick.rule == StickRule::Force) {
+    at_switch = shooting.solve(Stage::Stick, p.stick.threshold / scale);
+  } else if (p.stick.rule == StickRule::Depth) {
+    at_switch = shooting.solve_at_depth(Stage::Stick, p.stick.threshold / big_a);
+  } else {  // EdgeTension: s1 H at the edge [N/mm] reaches the threshold
+    const double target =
+        p.stick.threshold / (p.material.shear_modulus_mpa * p.geometry.thickness_mm);
+    const auto f =
+        first_force_where(shooting, Stage::Stick, 0.0, -target, [&](const ScaledSolution& s) {
+          return s.edge_s1 - target;
+        });
+    if (f) at_switch = shooting.solve(Stage::Stick, *f);
+  }
+  if (!at_switch || !at_switch->ok()) {
+    b.status = at_switch ? at_switch->status : Status::NoConvergence;
+    b.message = "the stick stage cannot reach its switch point: " +
+                (at_switch ? at_switch->message : std::string("no force meets the criterion"));
+    return out;
+  }
+  b.depth_mm = at_switch->depth * big_a;
+  b.force_stuck_n = at_switch->f * scale;
+  out.held = std::move(at_switch);
+  return out;
+}
+
+// The puncture point, given the problem's stick -> slip switch (locate_switch with the same
+// options); `at_switch` tells whether it is the sliding state at the switch (the jump to
+// sliding already reaches the critical I1).
+// The searches use `shooting`; the state at puncture is made physical with `options` (fields).
+template <class Shooting>
+PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
+                                 const Shooting& shooting, const SwitchPoint& switch_point,
+                                 bool& at_switch) {
+  at_switch = false;
+  PuncturePrediction out;
+  const double scale = force_scale_n(p);
+  const double big_a = p.geometry.clamp_radius_mm;
+  const double i1c = p.critical_i1;
+  const StageBoundary& boundary = switch_point.boundary;
+  if (boundary.status != Status::Converged) {
+    out.message = boundary.message;
+    return out;
+  }
+  auto over_critical = [&](const ScaledSolution& s) { return max_first_invariant(s) - i1c; };
+  std::optional<double> f_puncture;
+  Stage stage = Stage::Slip;
+  double slip_from_f = 0.0, slip_from_g = 3.0 - i1c;
+  if (boundary.first_stage == Stage::Stick) {
+    const double f_switch = boundary.switches ? boundary.force_stuck_n / scale : kInf;
+    bool punctures_stuck = !boundary.switches;
+    if (boundary.switches) {
+      const auto s =
+          switch_point.held ? *switch_point.held : shooting.solve(Stage::Stick, f_switch);
+      punctures_stuck = s.ok() && over_critical(s) >= 0.0;
+    }
+    if (punctures_stuck) {
+      stage = Stage::Stick;
+      f_puncture = first_force_where(shooting, Stage::Stick, 0.0, 3.0 - i1c, over_critical);
+    } else {
+      const auto s = shooting.solve_at_depth(Stage::Slip, boundary.depth_mm / big_a);
+      if (!s.ok()) {
+        out.message = "no sliding state at the stick -> slip switch: " + s.message;
+        return out;
+      }
+      slip_from_f = s.f;
+      slip_from_g = over_critical(s);
+      if (slip_from_g >= 0.0) {  // the jump to sliding already reaches the critical I1
+        f_puncture = s.f;
+        at_switch = true;
+      }
+    }
+  }
+  if (!f_puncture && stage == Stage::Slip) {
+    // Usually the crack starts at the corner once Part II exists, where a direct solve applies;
+    // it holds if the loading path reaches that force in the slip stage.  max I1 grows with the
+    // force along the path, so the first crossing is then this one.
+    const auto direct = shooting.contact().direct_puncture(shooting, i1c);
+    if (direct && direct->f >= slip_from_f)
+      f_puncture = direct->f;
+    else
+      f_puncture =
+          first_force_where(shooting, Stage::Slip, slip_from_f, slip_from_g, over_critical);
+  }
+  if (!f_puncture) {
+    out.message = fmt::format(
+        "no puncture found: I1 does not reach the critical value {:g} before the solver fails",
+        i1c);
+    return out;
+  }
+  const auto sol = shooting.solve(stage, *f_puncture);
+  if (!sol.ok()) {
+    out.message = "the state at puncture did not converge: " + sol.message;
+    return out;
+  }
+  // The force searches count a failed solve as beyond the root, so a stage whose solutions end
+  // (a held membrane that would wrap the side, locking) before the largest I1 reaches the
+  // critical value would return that end: not a puncture.  At a true root the largest I1 is
+  // the critical one to ~1e-8 relative (the corner solve's tolerance; the path search brackets
+  // the force to a few ulps): 1e-6 relative leaves a margin.
+  if (const double reached = max_first_invariant(sol); !at_switch && reached < i1c * (1.0 - 1e-6)) {
+    const auto beyond = shooting.solve(stage, *f_puncture * (1.0 + 1e-9));
+    out.message = fmt::format(
+        "no puncture found: in the {} stage the largest I1 reaches only {:.8g} (critical {:g}) "
+        "at {:.6g} N, where the solutions end{}",
+        to_string(stage),
+        reached,
+        i1c,
+        *f_puncture * scale,
+        beyond.ok() ? std::string() : ": " + beyond.message);
+    return out;
+  }
+
+  out.found = true;
+  out.state = to_physical(p, sol, stage, options);
+  out.force_n = out.state.force_n;
+  out.normalized_force = sol.f;
+  out.depth_mm = out.state.depth_mm;
+  out.stage = stage;
+  out.configuration = sol.configuration;
+  out.part_three_stretch = sol.part_three_stretch;
+  out.crack_reference_radius_mm = out.state.max_first_invariant_reference_radius_mm;
+  out.crack_location = shooting.contact().crack_location(sol);
+  if (at_switch) out.crack_location += " (at the stick -> slip switch)";
+  out.crack_radius_mm = out.state.max_first_invariant_radius_mm;
+  return out;
+}
+
+}  // namespace puncture::detail

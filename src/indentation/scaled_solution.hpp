@@ -1,0 +1,71 @@
+#pragma once
+// A solution of the indentation problem in normalised variables (lengths / A, stresses / G,
+// force f = F / (2 pi G H A)), whatever the indenter, and the settings of the shooting that
+// finds it.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "numerics/integrate.hpp"
+#include "puncture/equilibrium.hpp"
+
+namespace puncture::detail {
+
+// How the shooting integrates and when it stops (from SolverOptions).
+struct ShootingSettings {
+  IntegrationSettings integration;
+  double shooting_tol;
+  int max_iterations;
+  int field_points;  // at least this many Part I samples in recorded solutions
+};
+
+// Part I sample: R, t, lambda1, lambda2, h.  Part II sample: R, lambda1, y.
+using PartOneSample = std::array<double, 5>;
+using PartTwoSample = std::array<double, 3>;
+
+struct ScaledSolution {
+  Status status = Status::NoConvergence;
+  std::string message;
+  Configuration configuration = Configuration::Unloaded;
+  double f = 0.0;          // F / (2 pi G H A)
+  double parameter = 0.0;  // the configuration's shooting parameter (see the contact model)
+  double part_three_stretch = 1.0;
+  double r_corner = 0.0;         // reference radius of the material at the corner
+  double r_top = 0.0;            // reference radius where Part I starts
+  double part_two_length = 0.0;  // current length of Part II
+  double depth = 0.0;
+  double corner_slope = 0.0;
+  double tension_ratio = 1.0;  // s1 outside the corner / s1 in Part III
+  double edge_s1 = 0.0;        // s1 at the inner end of Part I
+  double max_i1 = 3.0;         // largest I1 in Parts I and II
+  double max_i1_r = 0.0;       // ... at this reference radius
+  double max_i1_radius = 0.0;  // ... and this current radius
+  double residual = 0.0;       // lambda2(A) - 1
+  int evaluations = 0;
+  bool integrated = false;    // every part was integrated (residual and depth are defined)
+  double shooting_tol = 0.0;  // the clamp tolerance it was judged against
+  std::vector<PartOneSample> part_one;
+  std::vector<PartTwoSample> part_two;
+  bool ok() const { return status == Status::Converged; }
+};
+
+// Largest I1 anywhere in the membrane, Part III (I1 = 2 L^2 + L^-4) included.
+inline double max_first_invariant_of(const ScaledSolution& sol) {
+  const double l3 = sol.part_three_stretch;
+  return std::max(sol.max_i1, 2.0 * l3 * l3 + 1.0 / (l3 * l3 * l3 * l3));
+}
+
+// After a bracketing shooting whose bracket has shrunk to adjacent floating-point numbers, the
+// clamp residual left is the integration's noise; when the clamp condition is then met to within
+// a hundred times the tolerance (1e-8 by default) the solution is accepted.
+inline void accept_collapsed_bracket(ScaledSolution& sol, double tol_factor = 100.0) {
+  if (sol.status == Status::NoConvergence && sol.integrated &&
+      std::abs(sol.residual) <= tol_factor * sol.shooting_tol) {
+    sol.status = Status::Converged;
+    sol.message.clear();
+  }
+}
+
+}  // namespace puncture::detail

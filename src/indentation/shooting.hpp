@@ -1,0 +1,153 @@
+#pragma once
+// Equilibrium of the indented membrane at a prescribed normalised force: the shooting of
+// docs/model.md ("Solving at a given force"), for any indenter.  The contact model (Contact, see
+// contact/contact_model.hpp) says where Part I starts for a shooting parameter and solves the
+// parts in contact; the shooting integrates Part I to the clamp and finds the parameter that
+// meets the clamp condition lambda2(A) = 1.
+#include <fmt/format.h>
+
+#include <limits>
+#include <optional>
+
+#include "indentation/contact/contact_model.hpp"
+#include "indentation/free_part.hpp"
+#include "numerics/shooting.hpp"
+
+namespace puncture::detail {
+
+template <class Contact>
+class IndentationShooting {
+ public:
+  using Law = typename Contact::law_type;
+
+  // `record_unloaded`: whether the state at zero force samples the flat membrane (the loaded
+  // states always sample Part I; Equilibrium fields are made from the samples on request).
+  IndentationShooting(const Law& law, const ShootingSettings& settings,
+                      const typename Contact::Settings& contact, bool record_unloaded = true)
+      : part_one_(law, settings), contact_(part_one_, contact), record_unloaded_(record_unloaded) {}
+  // The contact model refers to part_one_.
+  IndentationShooting(const IndentationShooting&) = delete;
+  IndentationShooting& operator=(const IndentationShooting&) = delete;
+
+  const Contact& contact() const { return contact_; }
+  const ShootingSettings& settings() const { return part_one_.settings(); }
+  double parameter_floor(Configuration configuration) const {
+    return contact_.parameter_floor(configuration);
+  }
+
+  // The equilibrium at force f in `stage` (the contact model picks the configuration).
+  ScaledSolution solve(Stage stage, double f) const {
+    if (f == 0.0) return contact_.unloaded(record_unloaded_);
+    ScaledSolution sol;
+    sol.f = f;
+    int evals = 0;
+    auto counted = [&](Configuration c, double p) {
+      ++evals;
+      return residual(c, f, p);
+    };
+    const ShootingPlan plan = contact_.plan(stage, f, counted);
+    sol.configuration = plan.configuration;
+    if (!plan.ok()) {
+      sol.status = plan.status;
+      sol.message = plan.message;
+      return sol;
+    }
+    const auto root = shoot_increasing([&](double p) { return counted(plan.configuration, p); },
+                                       plan.lo,
+                                       plan.g_lo,
+                                       plan.cap,
+                                       settings().max_iterations);
+    if (!root) {
+      sol.message = plan.no_root_message;
+      sol.evaluations = evals;
+      return sol;
+    }
+    sol = assemble(plan.configuration, f, *root, true);
+    sol.evaluations += evals;
+    accept_collapsed_bracket(sol);
+    return sol;
+  }
+
+  // The state of `configuration` at force f and parameter p, integrated once.  Its residual is
+  // zero only at an equilibrium; status is Converged when it is within the shooting tolerance.
+  // With `record`, Part I (and the parts in contact) are sampled.
+  ScaledSolution assemble(Configuration c, double f, double p, bool record) const {
+    ScaledSolution sol;
+    sol.f = f;
+    sol.parameter = p;
+    sol.configuration = c;
+    sol.evaluations = 1;
+    const auto st = contact_.free_start(c, f, p);
+    if (!st) {
+      sol.status = Status::BeyondLocking;
+      sol.message = "the shooting parameter is outside the material's domain";
+      return sol;
+    }
+    const auto run = part_one_.run(f, *st, record ? &sol.part_one : nullptr);
+    if (!run.ok) {
+      sol.message = run.turned_back ? "Part I turns back towards the axis before the clamp"
+                                    : "Part I cannot be integrated to the clamp (material locks)";
+      return sol;
+    }
+    sol.residual = run.residual;
+    sol.r_top = st->r0;
+    sol.corner_slope = st->slope;
+    sol.tension_ratio = st->ratio;
+    sol.edge_s1 = membrane_stress(part_one_.law(), st->state[1], st->state[2]).s1;
+    sol.max_i1 = run.max_i1;
+    sol.max_i1_r = run.max_i1_r;
+    sol.max_i1_radius = run.max_i1_radius;
+    sol.depth = run.height;
+    if (!contact_.attach(c, *st, p, record, sol)) return sol;
+    sol.integrated = true;
+    sol.shooting_tol = settings().shooting_tol;
+    sol.status = std::abs(sol.residual) <= settings().shooting_tol ? Status::Converged
+                                                                   : Status::NoConvergence;
+    if (!sol.ok())
+      sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);
+    return sol;
+  }
+
+  // Clamp residual of a configuration's Part I at (f, p); empty outside the material's domain.
+  std::optional<double> residual(Configuration c, double f, double p) const {
+    return part_one_.residual(f, contact_.free_start(c, f, p));
+  }
+
+  // The equilibrium at normalised depth d in `stage`: the force bracketed from zero (a search
+  // over solve(); the loading curve uses the faster DepthNewton and falls back on this).
+  ScaledSolution solve_at_depth(Stage stage, double d, double f_guess = 0.0) const {
+    if (d == 0.0) return solve(stage, 0.0);
+    ScaledSolution last_failure;
+    auto residual = [&](double f) -> std::optional<double> {
+      auto sol = solve(stage, f);
+      if (!sol.ok()) {
+        last_failure = std::move(sol);
+        return std::nullopt;
+      }
+      return sol.depth - d;
+    };
+    const double step = f_guess > 0.0 ? 0.5 * f_guess : 0.1;
+    const auto f = shoot_increasing(residual,
+                                    0.0,
+                                    -d,
+                                    std::numeric_limits<double>::infinity(),
+                                    settings().max_iterations,
+                                    step);
+    if (!f) {
+      if (last_failure.status == Status::Converged) last_failure.status = Status::NoConvergence;
+      if (last_failure.message.empty())
+        last_failure.message = "no force gives the requested depth";
+      else
+        last_failure.message = "the requested depth cannot be reached: " + last_failure.message;
+      return last_failure;
+    }
+    return solve(stage, *f);
+  }
+
+ private:
+  FreePart<Law> part_one_;
+  Contact contact_;
+  bool record_unloaded_;
+};
+
+}  // namespace puncture::detail
