@@ -22,6 +22,13 @@ void bind_enums(py::module_& m) {
       .def_property_readonly("token", [](Configuration c) { return to_token(c); })
       .def_property_readonly("description", [](Configuration c) { return to_string(c); });
 
+  py::class_<ValidationError>(m,
+                              "ValidationError",
+                              "One problem with the input: the attribute (or argument) it is about "
+                              "and what is wrong")
+      .def_readonly("parameter", &ValidationError::parameter, "e.g. 'geometry.clamp_radius_mm'")
+      .def_readonly("message", &ValidationError::message)
+      .def("__repr__", [](const ValidationError& e) { return e.parameter + ": " + e.message; });
   py::enum_<Status>(m, "Status", "Outcome of a solve")
       .value("Converged", Status::Converged)
       .value("NoConvergence", Status::NoConvergence)

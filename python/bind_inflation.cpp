@@ -22,28 +22,6 @@ namespace puncture::python {
 
 namespace {
 
-// The library's messages start with the parameter's name; this gives its attribute or argument.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 11> kNameOfMessage{{
-    {"clamp radius", "clamp_radius_mm"},
-    {"thickness", "thickness_mm"},
-    {"shear modulus", "material.shear_modulus_mpa"},
-    {"J_lim", "material.law.j_lim"},
-    {"Mooney-Rivlin alpha", "material.law.alpha"},
-    {"critical I1", "critical_i1"},
-    {"max pole stretch", "max_pole_stretch"},
-    {"pole stretch", "pole_stretch"},
-    {"pressure", "pressure_mpa"},
-    {"scan points", "scan_points"},
-    {"points", "points"},
-}};
-
-std::string with_name(const std::string& message) {
-  for (const auto& [prefix, name] : kNameOfMessage)
-    if (std::string_view(message).substr(0, prefix.size()) == prefix)
-      return fmt::format("{}: {}", name, message);
-  return message;
-}
-
 // An InflationProblem, or an indentation Problem whose membrane is used.
 using ProblemArg = std::variant<InflationProblem, Problem>;
 
@@ -53,11 +31,7 @@ InflationProblem membrane_of(const ProblemArg& arg) {
 }
 
 std::string invalid_message(const InflationProblem& problem) {
-  const auto errors = validation_errors(problem);
-  if (errors.empty()) return {};
-  std::string all = "invalid input:";
-  for (const auto& e : errors) all += "\n  " + with_name(e);
-  return all;
+  return invalid_input_message(validation_errors(problem));
 }
 
 InflationProblem checked(const ProblemArg& arg) {
@@ -67,16 +41,13 @@ InflationProblem checked(const ProblemArg& arg) {
   return problem;
 }
 
-// Runs a library call without the GIL; its std::invalid_argument becomes ValueError naming the
-// argument.
+// Runs a library call without the GIL; its InvalidInput becomes ValueError naming the argument.
 template <class F>
 auto released(F&& f) {
-  try {
+  return raising_value_error([&] {
     py::gil_scoped_release release;
     return f();
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(with_name(e.what()));
-  }
+  });
 }
 
 // puncture.SolverError (registered by bind_solve) with .status and .message.
@@ -194,7 +165,7 @@ void bind_types(py::module_& m) {
       .def(
           "validation_errors",
           [](const InflationProblem& p) { return validation_errors(p); },
-          "Every problem with the input (empty if valid)")
+          "Every problem with the input (ValidationError: attribute and message); empty if valid")
       .def(
           "validate",
           [](const InflationProblem& p) {

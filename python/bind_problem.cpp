@@ -18,26 +18,6 @@ namespace puncture::python {
 
 namespace {
 
-// The library's validation messages start with the parameter's name; this gives its attribute.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 9> kAttributeOfMessage{{
-    {"clamp radius", "geometry.clamp_radius_mm"},
-    {"indenter radius", "geometry.indenter_radius_mm"},
-    {"thickness", "geometry.thickness_mm"},
-    {"shear modulus", "material.shear_modulus_mpa"},
-    {"J_lim", "material.law.j_lim"},
-    {"Mooney-Rivlin alpha", "material.law.alpha"},
-    {"friction", "friction"},
-    {"critical I1", "critical_i1"},
-    {"stick threshold", "stick.threshold"},
-}};
-
-std::string with_attribute(const std::string& message) {
-  for (const auto& [prefix, attribute] : kAttributeOfMessage)
-    if (std::string_view(message).substr(0, prefix.size()) == prefix)
-      return fmt::format("{}: {}", attribute, message);
-  return message;
-}
-
 PartTwoEquation part_two_equation_of(const std::variant<PartTwoEquation, std::string>& v) {
   if (const auto* e = std::get_if<PartTwoEquation>(&v)) return *e;
   const auto& text = std::get<std::string>(v);
@@ -132,12 +112,15 @@ void copyable(py::class_<T>& c) {
 
 }  // namespace
 
-std::string invalid_input_message(const Problem& problem) {
-  const auto errors = validation_errors(problem);
+std::string invalid_input_message(const std::vector<ValidationError>& errors) {
   if (errors.empty()) return {};
   std::string all = "invalid input:";
-  for (const auto& e : errors) all += "\n  " + with_attribute(e);
+  for (const auto& e : errors) all += fmt::format("\n  {}: {}", e.parameter, e.message);
   return all;
+}
+
+std::string invalid_input_message(const Problem& problem) {
+  return invalid_input_message(validation_errors(problem));
 }
 
 void bind_problem(py::module_& m) {
@@ -353,8 +336,8 @@ void bind_problem(py::module_& m) {
       .def_property_readonly(
           "force_scale_n", &force_scale_n, "2 pi G H A [N]: normalised force = F / this")
       .def("validation_errors",
-           &validation_errors,
-           "Every problem with the input (the library's messages); empty if valid")
+           py::overload_cast<const Problem&>(&validation_errors),
+           "Every problem with the input (ValidationError: attribute and message); empty if valid")
       .def(
           "validate",
           [](const Problem& p) {

@@ -39,8 +39,22 @@ py::array_t<T> column(const Items& items, Get get) {
   return a;
 }
 
-// The validation messages of the library, each prefixed with the attribute it is about (as the
-// CLI prefixes them with the flag), under "invalid input:"; empty when the problem is valid.
+// The library's validation errors, each message prefixed with the attribute it is about (as the
+// CLI prefixes them with the flag), under "invalid input:"; empty when there is none.
+std::string invalid_input_message(const std::vector<ValidationError>& errors);
 std::string invalid_input_message(const Problem& problem);
+
+// Runs f; an InvalidInput it throws becomes ValueError naming the attribute or argument (one
+// error: "name: message"; several: as invalid_input_message).
+template <class F>
+auto raising_value_error(F&& f) {
+  try {
+    return f();
+  } catch (const InvalidInput& e) {
+    if (e.errors().size() == 1)
+      throw py::value_error(e.errors().front().parameter + ": " + e.errors().front().message);
+    throw py::value_error(invalid_input_message(e.errors()));
+  }
+}
 
 }  // namespace puncture::python

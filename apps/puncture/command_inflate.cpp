@@ -8,6 +8,7 @@
 
 #include "cli_error.hpp"
 #include "inflation_output.hpp"
+#include "parameter_flags.hpp"
 #include "progress.hpp"
 
 namespace puncture::cli {
@@ -35,18 +36,6 @@ constexpr const char* kFooter =
 bool given(const CLI::App& app, const char* flag) {
   const auto* option = app.get_option_no_throw(flag);
   return option && option->count() > 0;
-}
-
-// A library input error (std::invalid_argument), with the flag it is about.
-[[noreturn]] void rethrow_as_input(const std::invalid_argument& e) {
-  const std::string message = e.what();
-  for (const auto& [prefix, flag] : {std::pair{"pole stretch", "--pole-stretch"},
-                                     std::pair{"max pole stretch", "--max-pole-stretch"},
-                                     std::pair{"pressure", "--pressure"},
-                                     std::pair{"points", "--points"},
-                                     std::pair{"scan points", "--scan-points"}})
-    if (message.rfind(prefix, 0) == 0) throw InputError(fmt::format("{}: {}", flag, message));
-  throw InputError(message);
 }
 
 }  // namespace
@@ -138,8 +127,8 @@ std::string run_inflate(const CLI::App& app, const ProblemFlags& pf, const Curve
                                    to_string(report.curve.status),
                                    report.curve.message));
     return inflation_text(report, format);
-  } catch (const std::invalid_argument& e) {
-    rethrow_as_input(e);
+  } catch (const InvalidInput& e) {
+    rethrow_with_flags(e);
   }
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_error.hpp"
+#include "parameter_flags.hpp"
 #include "stick_spec.hpp"
 
 namespace puncture::cli {
@@ -18,26 +19,6 @@ constexpr const char* kGeometry = "Geometry";
 constexpr const char* kMaterial = "Material";
 constexpr const char* kContact = "Contact and failure";
 
-// The library's validation messages start with the parameter's name; this gives its flag.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 9> kFlagOfMessage{{
-    {"clamp radius", "--clamp-radius"},
-    {"indenter radius", "--indenter-radius"},
-    {"thickness", "--thickness"},
-    {"shear modulus", "--shear-modulus"},
-    {"J_lim", "--jlim"},
-    {"Mooney-Rivlin alpha", "--mr-alpha"},
-    {"friction", "--friction"},
-    {"critical I1", "--critical-i1"},
-    {"stick threshold", "--stick"},
-}};
-
-std::string with_flag(const std::string& message) {
-  for (const auto& [prefix, flag] : kFlagOfMessage)
-    if (std::string_view(message).substr(0, prefix.size()) == prefix)
-      return fmt::format("{}: {}", flag, message);
-  return message;
-}
-
 MaterialLaw law_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   if (f.material != "gent" && f.j_lim_option && f.j_lim_option->count() > 0)
     errors.push_back(fmt::format("--jlim: applies only to --material gent, not {}", f.material));
@@ -47,15 +28,6 @@ MaterialLaw law_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   if (f.material == "neo-hookean") return NeoHookean{};
   if (f.material == "mooney-rivlin") return MooneyRivlin{f.mr_alpha};
   return Gent{f.j_lim};
-}
-
-// Throws InputError listing `errors` and the library's `validation`, each with its flag.
-void throw_if_invalid(std::vector<std::string> errors, const std::vector<std::string>& validation) {
-  for (const auto& e : validation) errors.push_back(with_flag(e));
-  if (errors.empty()) return;
-  std::string all = "invalid input:";
-  for (const auto& e : errors) all += "\n  " + e;
-  throw InputError(all);
 }
 
 }  // namespace
@@ -154,7 +126,7 @@ Problem make_problem(const ProblemFlags& f) {
     p.stick = *stick;
   else
     errors.push_back(fmt::format("--stick: expected {}, got '{}'", kStickForms, f.stick));
-  throw_if_invalid(errors, validation_errors(p));
+  throw_if_invalid("invalid input:", errors, validation_errors(p));
   return p;
 }
 
@@ -166,7 +138,7 @@ InflationProblem make_inflation_problem(const ProblemFlags& f) {
   p.material.shear_modulus_mpa = f.shear_modulus_mpa;
   p.material.law = law_of(f, errors);
   p.critical_i1 = f.critical_i1;
-  throw_if_invalid(errors, validation_errors(p));
+  throw_if_invalid("invalid input:", errors, validation_errors(p));
   return p;
 }
 

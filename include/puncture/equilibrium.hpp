@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "puncture/options.hpp"
+#include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture {
@@ -17,19 +18,10 @@ enum class Configuration {
 
 enum class Stage { Stick, Slip };
 
-enum class Status {
-  Converged,
-  NoConvergence,   // the shooting did not reach the clamp condition; message says where
-  BeyondLocking,   // the load needs stretches beyond the material's locking limit
-  StickWrapsSide,  // a held membrane would wrap the indenter's side: outside the stick model
-  InvalidInput,    // the problem or the requested load is invalid; message names it
-};
-
 std::string to_string(Configuration configuration);
 // Machine-readable name, as written in CSV and JSON: "slip_with_part_two" and so on.
 std::string to_token(Configuration configuration);
 std::string to_string(Stage stage);
-std::string to_string(Status status);
 
 // Fields along the meridian from the centre (R = 0) to the clamp (R = A), in physical units.
 struct MembraneFields {

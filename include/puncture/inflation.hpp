@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "puncture/equilibrium.hpp"
 #include "puncture/material.hpp"
 #include "puncture/options.hpp"
+#include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture {
@@ -35,11 +35,11 @@ struct InflationProblem {
 // The membrane of an indentation problem (clamp radius, thickness, material, critical I1).
 InflationProblem inflation_problem(const Problem& problem);
 
-// Every problem with the input, each starting with the parameter's name ("clamp radius",
-// "thickness", "shear modulus", "J_lim", "Mooney-Rivlin alpha", "critical I1") and giving its
-// allowed range; empty if valid.
-std::vector<std::string> validation_errors(const InflationProblem& problem);
-// Throws std::invalid_argument listing every problem.
+// Every problem with the input, each with the attribute it is about ("clamp_radius_mm",
+// "thickness_mm", "material.shear_modulus_mpa", "material.law.j_lim", "material.law.alpha",
+// "critical_i1") and a message giving the allowed range; empty if valid.
+std::vector<ValidationError> validation_errors(const InflationProblem& problem);
+// Throws InvalidInput listing every problem.
 void validate(const InflationProblem& problem);
 
 // Pressure scale G H / A [MPa]: the normalised pressure is p A / (G H).

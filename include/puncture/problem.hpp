@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "puncture/material.hpp"
+#include "puncture/outcome.hpp"
 
 namespace puncture {
 
@@ -46,9 +47,10 @@ struct Problem {
   PartTwoEquation part_two_equation = PartTwoEquation::RingBalance;
 };
 
-// Every problem with the input, each naming the parameter and its allowed range; empty if valid.
-std::vector<std::string> validation_errors(const Problem& problem);
-// Throws std::invalid_argument listing every problem.
+// Every problem with the input, each with the attribute it is about and a message naming the
+// parameter and its allowed range; empty if valid.
+std::vector<ValidationError> validation_errors(const Problem& problem);
+// Throws InvalidInput listing every problem.
 void validate(const Problem& problem);
 
 // Force scale 2 pi G H A [N]: the paper's normalised force is F / force_scale.

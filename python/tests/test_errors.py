@@ -49,7 +49,8 @@ def test_invalid_problem_raises_value_error_like_the_cli(cli, kwargs, flags, att
         theirs = [line.strip().split(": ", 1) for line in cli_text.strip().splitlines()[1:]]
         # the same library messages, prefixed with the attribute instead of the flag
         assert [m for _, m in ours] == [m for _, m in theirs]
-        assert problem.validation_errors() == [m for _, m in ours]
+        assert [e.message for e in problem.validation_errors()] == [m for _, m in ours]
+        assert [e.parameter for e in problem.validation_errors()] == attributes
         assert [a for a, _ in ours] == attributes
 
 

@@ -55,9 +55,9 @@ std::string describe(const BandParameters& b) {
   return out + fmt::format(", G = {:.6g} MPa", b.shear_modulus_mpa);
 }
 
-std::string joined(const std::vector<std::string>& errors) {
+std::string joined(const std::vector<ValidationError>& errors) {
   std::string all;
-  for (const auto& e : errors) all += (all.empty() ? "" : "; ") + e;
+  for (const auto& e : errors) all += (all.empty() ? "" : "; ") + e.message;
   return all;
 }
 

@@ -40,22 +40,6 @@ std::string to_token(Configuration c) {
 
 std::string to_string(Stage stage) { return stage == Stage::Stick ? "stick" : "slip"; }
 
-std::string to_string(Status s) {
-  switch (s) {
-    case Status::Converged:
-      return "converged";
-    case Status::NoConvergence:
-      return "no convergence";
-    case Status::BeyondLocking:
-      return "beyond locking";
-    case Status::StickWrapsSide:
-      return "stick wraps side";
-    case Status::InvalidInput:
-      return "invalid input";
-  }
-  return "?";
-}
-
 namespace detail {
 
 ScaledSolution solve_scaled(const Problem& problem, double f, Stage stage,
@@ -209,7 +193,7 @@ Equilibrium invalid(std::string message) {
 Equilibrium solve_at_force(const Problem& problem, double force_n, Stage stage,
                            const SolverOptions& options) {
   if (const auto errors = validation_errors(problem); !errors.empty())
-    return invalid(errors.front());
+    return invalid(errors.front().message);
   if (!std::isfinite(force_n) || force_n < 0.0)
     return invalid("force must be a finite number >= 0 N, got " + std::to_string(force_n));
   const double f = force_n / force_scale_n(problem);
@@ -222,7 +206,7 @@ Equilibrium solve_at_force(const Problem& problem, double force_n, Stage stage,
 Equilibrium solve_at_depth(const Problem& problem, double depth_mm, Stage stage,
                            const SolverOptions& options) {
   if (const auto errors = validation_errors(problem); !errors.empty())
-    return invalid(errors.front());
+    return invalid(errors.front().message);
   if (!std::isfinite(depth_mm) || depth_mm < 0.0)
     return invalid("depth must be a finite number >= 0 mm, got " + std::to_string(depth_mm));
   const double d = depth_mm / problem.geometry.clamp_radius_mm;

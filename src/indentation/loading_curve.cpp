@@ -26,7 +26,7 @@ StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options
     StageBoundary b;
     if (const auto errors = validation_errors(p); !errors.empty()) {
       b.status = Status::InvalidInput;
-      b.message = errors.front();
+      b.message = errors.front().message;
       return b;
     }
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
@@ -39,7 +39,7 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
   return detail::reporting_failures<PuncturePrediction>([&] {
     PuncturePrediction out;
     if (const auto errors = validation_errors(p); !errors.empty()) {
-      out.message = errors.front();
+      out.message = errors.front().message;
       return out;
     }
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
@@ -56,7 +56,7 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
     LoadingCurve out;
     if (const auto errors = validation_errors(p); !errors.empty()) {
       out.status = Status::InvalidInput;
-      out.message = errors.front();
+      out.message = errors.front().message;
       return out;
     }
     if (curve.points < 2) {

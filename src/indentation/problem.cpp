@@ -5,6 +5,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "mechanics/membrane_validation.hpp"
 
@@ -12,82 +13,90 @@ namespace puncture {
 
 namespace detail {
 
-void require_positive(std::vector<std::string>& errors, const char* name, double value,
-                      const char* unit) {
+void require_positive(std::vector<ValidationError>& errors, std::string parameter, const char* name,
+                      double value, const char* unit) {
   if (!std::isfinite(value) || value <= 0.0)
-    errors.push_back(fmt::format("{} must be a finite number > 0 {}, got {}", name, unit, value));
+    errors.push_back({std::move(parameter),
+                      fmt::format("{} must be a finite number > 0 {}, got {}", name, unit, value)});
 }
 
-void append_material_errors(std::vector<std::string>& errors, const Material& material) {
-  require_positive(errors, "shear modulus", material.shear_modulus_mpa, "MPa");
+void append_material_errors(std::vector<ValidationError>& errors, const Material& material) {
+  require_positive(
+      errors, "material.shear_modulus_mpa", "shear modulus", material.shear_modulus_mpa, "MPa");
   if (const auto* gent = std::get_if<Gent>(&material.law)) {
     if (!std::isfinite(gent->j_lim) || gent->j_lim <= 0.0)
-      errors.push_back(fmt::format("J_lim must be a finite number > 0, got {}", gent->j_lim));
+      errors.push_back({"material.law.j_lim",
+                        fmt::format("J_lim must be a finite number > 0, got {}", gent->j_lim)});
   }
   if (const auto* mr = std::get_if<MooneyRivlin>(&material.law)) {
     if (!std::isfinite(mr->alpha) || mr->alpha < 0.0 || mr->alpha >= 1.0)
       errors.push_back(
-          fmt::format("Mooney-Rivlin alpha = C2/(C1+C2) must be in [0, 1), got {}", mr->alpha));
+          {"material.law.alpha",
+           fmt::format("Mooney-Rivlin alpha = C2/(C1+C2) must be in [0, 1), got {}", mr->alpha)});
   }
 }
 
-void append_critical_i1_errors(std::vector<std::string>& errors, double critical_i1,
+void append_critical_i1_errors(std::vector<ValidationError>& errors, double critical_i1,
                                const MaterialLaw& law) {
   const double i1_max = max_first_invariant(law);
   if (!std::isfinite(critical_i1) || critical_i1 <= 3.0)
-    errors.push_back(fmt::format("critical I1 must be a finite number > 3, got {}", critical_i1));
+    errors.push_back({"critical_i1",
+                      fmt::format("critical I1 must be a finite number > 3, got {}", critical_i1)});
   else if (critical_i1 >= i1_max)
     errors.push_back(
-        fmt::format("critical I1 must be below the Gent locking limit 3 + J_lim = {:g}, got {:g}",
-                    i1_max,
-                    critical_i1));
+        {"critical_i1",
+         fmt::format("critical I1 must be below the Gent locking limit 3 + J_lim = {:g}, got {:g}",
+                     i1_max,
+                     critical_i1)});
 }
 
-void throw_if_invalid(const char* heading, const std::vector<std::string>& errors) {
-  if (errors.empty()) return;
-  std::string all = heading;
-  for (const auto& e : errors) all += "\n  " + e;
-  throw std::invalid_argument(all);
+void throw_if_invalid(const char* heading, const std::vector<ValidationError>& errors) {
+  if (!errors.empty()) throw InvalidInput(errors, heading);
 }
 
 }  // namespace detail
 
-std::vector<std::string> validation_errors(const Problem& p) {
-  std::vector<std::string> errors;
+std::vector<ValidationError> validation_errors(const Problem& p) {
+  std::vector<ValidationError> errors;
   const auto& g = p.geometry;
   using detail::require_positive;
-  require_positive(errors, "clamp radius", g.clamp_radius_mm, "mm");
-  require_positive(errors, "indenter radius", g.indenter_radius_mm, "mm");
-  require_positive(errors, "thickness", g.thickness_mm, "mm");
+  require_positive(errors, "geometry.clamp_radius_mm", "clamp radius", g.clamp_radius_mm, "mm");
+  require_positive(
+      errors, "geometry.indenter_radius_mm", "indenter radius", g.indenter_radius_mm, "mm");
+  require_positive(errors, "geometry.thickness_mm", "thickness", g.thickness_mm, "mm");
   if (std::isfinite(g.indenter_radius_mm) && std::isfinite(g.clamp_radius_mm) &&
       g.indenter_radius_mm > 0.0 && g.clamp_radius_mm > 0.0 &&
       g.indenter_radius_mm >= g.clamp_radius_mm)
     errors.push_back(
-        fmt::format("indenter radius must be smaller than the clamp radius ({} mm), got {} mm",
-                    g.clamp_radius_mm,
-                    g.indenter_radius_mm));
+        {"geometry.indenter_radius_mm",
+         fmt::format("indenter radius must be smaller than the clamp radius ({} mm), got {} mm",
+                     g.clamp_radius_mm,
+                     g.indenter_radius_mm)});
   detail::append_material_errors(errors, p.material);
   if (!std::isfinite(p.friction) || p.friction < 0.0)
     errors.push_back(
-        fmt::format("friction coefficient must be a finite number >= 0, got {}", p.friction));
+        {"friction",
+         fmt::format("friction coefficient must be a finite number >= 0, got {}", p.friction)});
   else if (p.friction > 10.0)
-    errors.push_back(fmt::format(
-        "friction coefficient must be <= 10 (beyond, the sliding under the tip is below double "
-        "precision; use --stick always for a fully held membrane), got {}",
-        p.friction));
+    errors.push_back(
+        {"friction",
+         fmt::format(
+             "friction coefficient must be <= 10 (beyond, the sliding under the tip is below "
+             "double precision; use --stick always for a fully held membrane), got {}",
+             p.friction)});
   detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
   const auto& s = p.stick;
   if (s.rule == StickRule::Force || s.rule == StickRule::Depth ||
       s.rule == StickRule::EdgeTension) {
     if (!std::isfinite(s.threshold) || s.threshold <= 0.0)
-      errors.push_back(
-          fmt::format("stick threshold for rule '{}' must be a finite number > 0 {}, "
-                      "got {}",
-                      to_string(s.rule),
-                      s.rule == StickRule::Force   ? "N"
-                      : s.rule == StickRule::Depth ? "mm"
-                                                   : "N/mm",
-                      s.threshold));
+      errors.push_back({"stick.threshold",
+                        fmt::format("stick threshold for rule '{}' must be a finite number > 0 {}, "
+                                    "got {}",
+                                    to_string(s.rule),
+                                    s.rule == StickRule::Force   ? "N"
+                                    : s.rule == StickRule::Depth ? "mm"
+                                                                 : "N/mm",
+                                    s.threshold)});
   }
   return errors;
 }

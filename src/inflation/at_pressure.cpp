@@ -18,7 +18,8 @@ InflationAtPressure inflate_at_pressure(const InflationProblem& problem, double 
   validate(problem);
   detail::check_curve_options(problem, range);
   if (!std::isfinite(pressure_mpa) || pressure_mpa < 0.0)
-    throw std::invalid_argument(
+    throw InvalidInput(
+        "pressure_mpa",
         fmt::format("pressure must be a finite number >= 0 MPa, got {}", pressure_mpa));
   InflationAtPressure out;
   out.pressure_mpa = pressure_mpa;

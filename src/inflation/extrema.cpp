@@ -26,22 +26,26 @@ SolverOptions differencing_options(const SolverOptions& options) {
 
 void check_curve_options(const InflationProblem& problem, const InflationCurveOptions& curve) {
   if (curve.points < 2 || curve.points > 100000)
-    throw std::invalid_argument(
-        fmt::format("points must be in the range 2 to 100000, got {}", curve.points));
+    throw InvalidInput(
+        "points", fmt::format("points must be in the range 2 to 100000, got {}", curve.points));
   if (curve.scan_points < 8 || curve.scan_points > 100000)
-    throw std::invalid_argument(
+    throw InvalidInput(
+        "scan_points",
         fmt::format("scan points must be in the range 8 to 100000, got {}", curve.scan_points));
   const double m = curve.max_pole_stretch;
   const double lock = locking_pole_stretch(problem.material.law);
   if (m != 0.0 && (!std::isfinite(m) || m <= 1.0))
-    throw std::invalid_argument(
+    throw InvalidInput(
+        "max_pole_stretch",
         fmt::format("max pole stretch must be 0 (to the burst) or a finite number > 1, got {}", m));
   if (m != 0.0 && m >= lock)
-    throw std::invalid_argument(fmt::format(
-        "max pole stretch must be below the pole stretch at which the Gent law locks ({:.6g}), "
-        "got {}",
-        lock,
-        m));
+    throw InvalidInput(
+        "max_pole_stretch",
+        fmt::format(
+            "max pole stretch must be below the pole stretch at which the Gent law locks ({:.6g}), "
+            "got {}",
+            lock,
+            m));
 }
 
 namespace {
@@ -128,7 +132,7 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
   check.max_pole_stretch = max_pole_stretch;
   check.scan_points = scan_points;
   if (max_pole_stretch == 0.0)
-    throw std::invalid_argument("max pole stretch must be a finite number > 1, got 0");
+    throw InvalidInput("max_pole_stretch", "max pole stretch must be a finite number > 1, got 0");
   detail::check_curve_options(problem, check);
 
   PressureExtrema out;

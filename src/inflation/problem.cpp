@@ -15,12 +15,11 @@ InflationProblem inflation_problem(const Problem& problem) {
           problem.critical_i1};
 }
 
-// The checks and words of validation_errors(const Problem&) (membrane_validation.hpp), so that
-// the CLI and the Python bindings map each message to their flag or attribute the same way.
-std::vector<std::string> validation_errors(const InflationProblem& p) {
-  std::vector<std::string> errors;
-  detail::require_positive(errors, "clamp radius", p.clamp_radius_mm, "mm");
-  detail::require_positive(errors, "thickness", p.thickness_mm, "mm");
+// The checks and words of validation_errors(const Problem&) (membrane_validation.hpp).
+std::vector<ValidationError> validation_errors(const InflationProblem& p) {
+  std::vector<ValidationError> errors;
+  detail::require_positive(errors, "clamp_radius_mm", "clamp radius", p.clamp_radius_mm, "mm");
+  detail::require_positive(errors, "thickness_mm", "thickness", p.thickness_mm, "mm");
   detail::append_material_errors(errors, p.material);
   detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
   return errors;

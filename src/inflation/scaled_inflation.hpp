@@ -49,7 +49,7 @@ ScaledInflation solve_inflation(const MaterialLaw& law, double pole_stretch,
 InflationState to_physical(const InflationProblem& problem, const ScaledInflation& sol);
 
 // Throws std::invalid_argument (naming `name`) unless pole_stretch is finite and >= 1.
-void check_pole_stretch(double pole_stretch, const char* name);
+void check_pole_stretch(double pole_stretch);
 
 // Pole stretch at which the pole locks (infinity for laws that never lock).
 double locking_pole_stretch(const MaterialLaw& law);

@@ -12,12 +12,12 @@ namespace puncture {
 
 namespace detail {
 
-void check_pole_stretch(double pole_stretch, const char* name) {
+void check_pole_stretch(double pole_stretch) {
   if (!std::isfinite(pole_stretch) || pole_stretch < 1.0)
-    throw std::invalid_argument(
-        fmt::format("{} must be a finite number >= 1 (an inflated membrane stretches), got {}",
-                    name,
-                    pole_stretch));
+    throw InvalidInput("pole_stretch",
+                       fmt::format("pole stretch must be a finite number >= 1 (an inflated "
+                                   "membrane stretches), got {}",
+                                   pole_stretch));
 }
 
 namespace {
@@ -90,7 +90,7 @@ InflationState to_physical(const InflationProblem& p, const ScaledInflation& sol
 InflationState inflate_at_pole_stretch(const InflationProblem& problem, double pole_stretch,
                                        const SolverOptions& options) {
   validate(problem);
-  detail::check_pole_stretch(pole_stretch, "pole stretch");
+  detail::check_pole_stretch(pole_stretch);
   return detail::to_physical(problem,
                              detail::solve_inflation(problem.material.law, pole_stretch, options));
 }

@@ -362,7 +362,7 @@ RC_GTEST_PROP(SolverProperties, InvalidInputIsReportedNeverThrown, ()) {
   const std::string what = describe(p);
   const auto errors = no_throw(what, [&] { return validation_errors(p); });
   RC_ASSERT(!errors.empty());
-  for (const auto& e : errors) RC_ASSERT(!e.empty());
+  for (const auto& e : errors) RC_ASSERT(!e.parameter.empty() && !e.message.empty());
   try {
     validate(p);
     RC_FAIL("validate accepted " + what);

@@ -46,7 +46,9 @@ TEST(BadInput, CriticalInvariantAtOrBeyondLockingIsRejected) {
     p.critical_i1 = i1c;
     const auto errors = validation_errors(p);
     ASSERT_EQ(errors.size(), 1u) << "I1c = " << i1c;
-    EXPECT_NE(errors.front().find("critical I1"), std::string::npos) << errors.front();
+    EXPECT_EQ(errors.front().parameter, "critical_i1");
+    EXPECT_NE(errors.front().message.find("critical I1"), std::string::npos)
+        << errors.front().message;
     EXPECT_THROW(validate(p), std::invalid_argument);
     const auto e = solve_at_force(p, 0.5, Stage::Slip);
     EXPECT_EQ(e.status, Status::InvalidInput);
@@ -103,7 +105,7 @@ TEST(RandomInputs, EveryResultIsFiniteOrExplained) {
     p.material.shear_modulus_mpa = uniform(gen, 0.01, 1.0);
     p.critical_i1 = std::min(95.2, 3.0 + 0.8 * j_lim);
     const double f = uniform(gen, 0.01, 2.0), depth = uniform(gen, 1.0, 60.0);
-    ASSERT_TRUE(validation_errors(p).empty()) << validation_errors(p).front();
+    ASSERT_TRUE(validation_errors(p).empty()) << validation_errors(p).front().message;
     const std::string what = "sample " + std::to_string(sample) +
                              ": a = " + std::to_string(p.geometry.indenter_radius_mm) +
                              " mm, mu' = " + std::to_string(p.friction) +

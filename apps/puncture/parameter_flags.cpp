@@ -1,0 +1,60 @@
+#include "parameter_flags.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <string_view>
+#include <utility>
+
+#include "cli_error.hpp"
+
+namespace puncture::cli {
+
+namespace {
+
+constexpr std::array<std::pair<std::string_view, std::string_view>, 18> kFlagOfParameter{{
+    {"geometry.clamp_radius_mm", "--clamp-radius"},
+    {"geometry.indenter_radius_mm", "--indenter-radius"},
+    {"geometry.thickness_mm", "--thickness"},
+    {"clamp_radius_mm", "--clamp-radius"},
+    {"thickness_mm", "--thickness"},
+    {"material.shear_modulus_mpa", "--shear-modulus"},
+    {"material.law.j_lim", "--jlim"},
+    {"material.law.alpha", "--mr-alpha"},
+    {"friction", "--friction"},
+    {"critical_i1", "--critical-i1"},
+    {"stick.threshold", "--stick"},
+    {"pole_stretch", "--pole-stretch"},
+    {"max_pole_stretch", "--max-pole-stretch"},
+    {"pressure_mpa", "--pressure"},
+    {"points", "--points"},
+    {"scan_points", "--scan-points"},
+    {"force_n", "--force"},
+    {"depth_mm", "--depth"},
+}};
+
+}  // namespace
+
+std::string with_flag(const ValidationError& error) {
+  for (const auto& [parameter, flag] : kFlagOfParameter)
+    if (parameter == error.parameter) return fmt::format("{}: {}", flag, error.message);
+  return error.message;
+}
+
+void throw_if_invalid(const char* heading, std::vector<std::string> errors,
+                      const std::vector<ValidationError>& validation) {
+  for (const auto& e : validation) errors.push_back(with_flag(e));
+  if (errors.empty()) return;
+  std::string all = heading;
+  for (const auto& e : errors) all += "\n  " + e;
+  throw InputError(all);
+}
+
+void rethrow_with_flags(const InvalidInput& e) {
+  const auto& errors = e.errors();
+  if (errors.size() == 1) throw InputError(with_flag(errors.front()));
+  throw_if_invalid("invalid input:", {}, errors);
+  throw InputError(e.what());
+}
+
+}  // namespace puncture::cli
