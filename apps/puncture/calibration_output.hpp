@@ -1,7 +1,8 @@
 #pragma once
 // What the calibration commands computed, and their summary, CSV and JSON writers.  Every
 // number written is checked finite (SolveError otherwise); a missing value is "n/a" in the
-// summary, an empty cell in CSV and null in JSON.
+// summary, an empty cell in CSV and null in JSON.  The writers are in calibration/, one file per
+// calibration and common_output.cpp for what they share.
 #include <optional>
 #include <string>
 #include <vector>

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -50,12 +52,19 @@ struct Case {
   FeContact contact;
 };
 
+// "a0p5mm_Gent_Held": the indenter radius in mm (p for the decimal point), the law, the contact.
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {
   const Case& c = info.param;
+  std::string radius = fmt::format("{:g}", c.indenter_radius_mm);
+  std::replace(radius.begin(), radius.end(), '.', 'p');
   return fmt::format("a{}mm_{}_{}",
-                     int(c.indenter_radius_mm * 10),
+                     radius,
                      c.neo_hookean ? "NeoHookean" : "Gent",
                      c.contact == FeContact::Held ? "Held" : "Frictionless");
+}
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << "a = " << c.indenter_radius_mm << " mm, " << (c.neo_hookean ? "neo-Hookean" : "Gent")
+      << ", " << to_string(c.contact);
 }
 
 class FiniteElementAgreement : public ::testing::TestWithParam<Case> {};

@@ -1,8 +1,11 @@
 // The small-deflection limit: as the force goes to zero the large-strain solver must approach the
 // Föppl membrane (foppl_membrane.hpp, an independent solver) for both held and sliding edges.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "puncture/equilibrium.hpp"
 #include "verification/foppl_membrane.hpp"
@@ -40,7 +43,13 @@ TEST(FopplMembrane, PointLoadLimitIsApproachedSlowly) {
   EXPECT_LT(std::abs(gap_small), std::abs(gap_big));
 }
 
+// The parameter is the indenter radius [mm]: "a0p5mm" for 0.5 (p for the decimal point).
 class FopplLimit : public ::testing::TestWithParam<double> {};
+std::string radius_name(const ::testing::TestParamInfo<double>& info) {
+  std::string radius = fmt::format("{:g}", info.param);
+  std::replace(radius.begin(), radius.end(), '.', 'p');
+  return "a" + radius + "mm";
+}
 
 TEST_P(FopplLimit, FullSolverApproachesFopplAsForceVanishes) {
   Problem p;
@@ -61,7 +70,7 @@ TEST_P(FopplLimit, FullSolverApproachesFopplAsForceVanishes) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(IndenterRadii, FopplLimit, ::testing::Values(0.5, 2.0, 5.0));
+INSTANTIATE_TEST_SUITE_P(IndenterRadii, FopplLimit, ::testing::Values(0.5, 2.0, 5.0), radius_name);
 
 // Far into the limit (depths of micrometres, strains ~1e-8) both stages still solve, and follow
 // Foppl's delta ~ F^(1/3): tenfold less force, 10^(1/3) less depth.  The next order of the

@@ -1,0 +1,68 @@
+#pragma once
+// Pieces shared by the writers of the calibration results (critical_i1_output.cpp,
+// friction_output.cpp, jlim_output.cpp, uniaxial_fit_output.cpp, band_output.cpp): numbers and
+// lines of the summaries, the physical inputs, the inversions; and the writers each of those
+// files defines for its report, which calibration_text (common_output.cpp) dispatches to.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "calibration_output.hpp"
+#include "json_helpers.hpp"
+#include "puncture/calibration.hpp"
+#include "puncture/problem.hpp"
+
+namespace puncture::cli::calibration {
+
+// ----- shared helpers -------------------------------------------------------------------------
+
+std::string num(double x, std::string_view what);
+
+std::string num_or(const std::optional<double>& x, std::string_view what,
+                   std::string_view missing = "n/a");
+
+void line(std::string& out, std::string_view label, std::string_view value);
+
+// About `shown` evenly spaced rows, always the first and the last.
+std::vector<std::size_t> sampled_rows(std::size_t n, std::size_t shown);
+
+// The physical inputs; `calibrated` ("friction" or "jlim") is left out.
+void problem_lines(std::string& out, const Problem& p, std::string_view calibrated);
+
+std::optional<double> value_of(const Inversion& i);
+
+json inversion_json(const Inversion& i, std::string_view what);
+
+// "1.9923", or "not found: <why>"; a warning on a found value is kept.
+std::string inversion_text(const Inversion& i, std::string_view what);
+
+// ----- the writers of each calibration: readable summary, CSV and JSON --------------------------
+
+// critical_i1_output.cpp
+std::string summary(const CriticalI1Report& r);
+std::string csv_text(const CriticalI1Report& r);
+std::string json_text(const CriticalI1Report& r);
+
+// friction_output.cpp
+std::string summary(const FrictionReport& r);
+std::string csv_text(const FrictionReport& r);
+std::string json_text(const FrictionReport& r);
+
+// jlim_output.cpp
+std::string summary(const JLimReport& r);
+std::string csv_text(const JLimReport& r);
+std::string json_text(const JLimReport& r);
+
+// uniaxial_fit_output.cpp
+std::string summary(const UniaxialFitReport& r);
+std::string csv_text(const UniaxialFitReport& r);
+std::string json_text(const UniaxialFitReport& r);
+
+// band_output.cpp
+std::string summary(const BandReport& r);
+std::string csv_text(const BandReport& r);
+std::string json_text(const BandReport& r);
+
+}  // namespace puncture::cli::calibration
