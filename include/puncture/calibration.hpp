@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "puncture/csv.hpp"
+#include "puncture/kinematics.hpp"
 #include "puncture/loading_curve.hpp"
 #include "puncture/problem.hpp"
 
@@ -37,10 +38,6 @@ struct CriticalI1Estimate {
   std::optional<double> standard_deviation;  // sample standard deviation (n - 1); needs 2 tests
   std::optional<double> standard_error;      // of the mean, sd / sqrt(n)
 };
-
-double equibiaxial_first_invariant(double stretch);  // 2 l^2 + l^-4
-// The stretch >= 1 whose equibiaxial I1 is `i1` (>= 3); Boost's bracketed Newton.
-double equibiaxial_stretch_for_first_invariant(double i1);
 
 // Throws std::invalid_argument naming the test when a radius is not a finite number > 0 or the
 // mark shrank (burst radius below the initial radius), or when there is no test.

@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "inflation/scaled_inflation.hpp"
-#include "puncture/calibration.hpp"
+#include "puncture/kinematics.hpp"
 
 namespace puncture {
 

@@ -5,7 +5,6 @@
 #include <string>
 #include <vector>
 
-#include "puncture/equilibrium.hpp"
 #include "puncture/inflation.hpp"
 #include "puncture/material.hpp"
 #include "puncture/options.hpp"

@@ -13,7 +13,7 @@
 #include "inflation/inflation_ode.hpp"
 #include "inflation/scaled_inflation.hpp"
 #include "numerics/interior_maximum.hpp"
-#include "puncture/calibration.hpp"
+#include "puncture/kinematics.hpp"
 
 namespace puncture::detail {
 
