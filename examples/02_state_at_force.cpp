@@ -5,7 +5,7 @@
 
 int main() {
   puncture::Problem problem;
-  problem.geometry.indenter_radius_mm = 3.0;
+  problem.indenter = puncture::FlatPunch{3.0};
   const auto e = puncture::solve_at_force(problem, 0.8, puncture::Stage::Slip);  // 0.8 N
   if (!e.ok()) {
     fmt::print("{}: {}\n", puncture::to_string(e.status), e.message);

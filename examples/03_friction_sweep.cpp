@@ -5,7 +5,7 @@
 
 int main() {
   puncture::Problem problem;
-  problem.geometry.indenter_radius_mm = 1.0;
+  problem.indenter = puncture::FlatPunch{1.0};
   for (double mu : {0.0, 0.18, 0.5, 1.0, 1.95}) {
     problem.friction = mu;
     const auto p = puncture::predict_puncture(problem);

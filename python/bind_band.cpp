@@ -73,6 +73,10 @@ void bind_band(py::module_& m) {
   py::class_<BandEvaluation>(m, "BandEvaluation", "One predicted puncture of the band")
       .def_readonly("parameters", &BandEvaluation::parameters)
       .def_readonly("found", &BandEvaluation::found)
+      .def_property_readonly(
+          "ok",
+          [](const BandEvaluation& e) { return e.found; },
+          "True when a puncture point was found (found)")
       .def_readonly("message", &BandEvaluation::message, "why not, when not found")
       .def_property_readonly("force_n",
                              [](const BandEvaluation& e) {
@@ -118,6 +122,10 @@ void bind_band(py::module_& m) {
       .def_readonly("force_half_range_rss_n", &PunctureBand::force_half_range_rss_n)
       .def_readonly("dominant", &PunctureBand::dominant)
       .def_readonly("complete", &PunctureBand::complete)
+      .def_property_readonly(
+          "ok",
+          [](const PunctureBand& b) { return b.complete; },
+          "True when every evaluation found a puncture point (complete)")
       .def_readonly("consistent_with_documented_directions",
                     &PunctureBand::consistent_with_documented_directions)
       .def_readonly("warnings", &PunctureBand::warnings)

@@ -72,6 +72,10 @@ std::optional<double> value_of(const Inversion& i) {
 void bind_inversions(py::module_& m) {
   py::class_<Inversion>(m, "Inversion", "One model parameter inverted from one measured value")
       .def_readonly("found", &Inversion::found)
+      .def_property_readonly(
+          "ok",
+          [](const Inversion& i) { return i.found; },
+          "True when the parameter was found (found)")
       .def_readonly("message", &Inversion::message, "why not found, or a warning")
       .def_property_readonly(
           "value",

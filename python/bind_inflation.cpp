@@ -241,7 +241,8 @@ void bind_types(py::module_& m) {
       .def_readonly("clamp_residual", &InflationState::clamp_residual)
       .def_readonly("shooting_evaluations", &InflationState::shooting_evaluations)
       .def_readonly("fields", &InflationState::fields)
-      .def("ok", &InflationState::ok)
+      .def_property_readonly(
+          "ok", &InflationState::ok, "True when converged (the same as status == Status.Converged)")
       .def("__repr__", &state_repr);
 
   py::enum_<ExtremumKind>(m, "ExtremumKind", "A pressure maximum (limit point) or minimum")
@@ -266,6 +267,10 @@ void bind_types(py::module_& m) {
   py::class_<InflationBurst>(
       m, "InflationBurst", "The first state whose largest I1 reaches the critical I1")
       .def_readonly("found", &InflationBurst::found)
+      .def_property_readonly(
+          "ok",
+          [](const InflationBurst& b) { return b.found; },
+          "True when the burst was found (found)")
       .def_readonly("message", &InflationBurst::message)
       .def_readonly("state", &InflationBurst::state)
       .def("__repr__", [](const InflationBurst& b) {
@@ -286,7 +291,8 @@ void bind_types(py::module_& m) {
       .def_readonly("states", &InflationCurve::states, "list of InflationState (no fields)")
       .def_readonly("extrema", &InflationCurve::extrema, "list of PressureExtremum")
       .def_readonly("burst", &InflationCurve::burst)
-      .def("ok", &InflationCurve::ok)
+      .def_property_readonly(
+          "ok", &InflationCurve::ok, "True when converged (the same as status == Status.Converged)")
       .def("__len__", [](const InflationCurve& c) { return c.states.size(); })
       .def(
           "columns",
@@ -324,7 +330,9 @@ void bind_types(py::module_& m) {
                     "list of InflationState in increasing pole stretch; the first is reached "
                     "by inflating slowly from flat")
       .def_readonly("extrema", &InflationAtPressure::extrema)
-      .def("ok", &InflationAtPressure::ok)
+      .def_property_readonly("ok",
+                             &InflationAtPressure::ok,
+                             "True when converged (the same as status == Status.Converged)")
       .def("__len__", [](const InflationAtPressure& a) { return a.states.size(); })
       .def("__repr__", [](const InflationAtPressure& a) {
         return fmt::format("<InflationAtPressure pressure_mpa={:.6g}: {} states>",

@@ -71,10 +71,14 @@ std::string law_repr(const MaterialLaw& law) {
 }
 
 std::string geometry_repr(const Geometry& g) {
-  return fmt::format("Geometry(clamp_radius_mm={:g}, indenter_radius_mm={:g}, thickness_mm={:g})",
-                     g.clamp_radius_mm,
-                     g.indenter_radius_mm,
-                     g.thickness_mm);
+  return fmt::format(
+      "Geometry(clamp_radius_mm={:g}, thickness_mm={:g})", g.clamp_radius_mm, g.thickness_mm);
+}
+
+std::string indenter_repr(const Indenter& indenter) {
+  return std::visit(
+      [](const FlatPunch& p) { return fmt::format("FlatPunch(radius_mm={:g})", p.radius_mm); },
+      indenter);
 }
 
 std::string material_repr(const Material& m) {
@@ -124,24 +128,30 @@ std::string invalid_input_message(const Problem& problem) {
 }
 
 void bind_problem(py::module_& m) {
-  py::class_<Geometry> geometry(m, "Geometry", "Clamp, indenter and membrane dimensions [mm]");
+  py::class_<Geometry> geometry(m, "Geometry", "The membrane's dimensions [mm]");
   geometry
-      .def(py::init([](double clamp, double indenter, double thickness) {
-             return Geometry{clamp, indenter, thickness};
+      .def(py::init([](double clamp, double thickness) {
+             return Geometry{clamp, thickness};
            }),
            py::arg("clamp_radius_mm") = Geometry{}.clamp_radius_mm,
-           py::arg("indenter_radius_mm") = Geometry{}.indenter_radius_mm,
            py::arg("thickness_mm") = Geometry{}.thickness_mm)
       .def_readwrite("clamp_radius_mm",
                      &Geometry::clamp_radius_mm,
                      "inner radius A of the clamping rings [mm]")
-      .def_readwrite("indenter_radius_mm",
-                     &Geometry::indenter_radius_mm,
-                     "radius a of the flat-ended indenter [mm]")
       .def_readwrite(
           "thickness_mm", &Geometry::thickness_mm, "undeformed membrane thickness H [mm]")
       .def("__repr__", &geometry_repr);
   copyable(geometry);
+
+  // Indenter shapes are values (read-only: assign a new one to Problem.indenter).
+  py::class_<FlatPunch> flat_punch(
+      m, "FlatPunch", "The paper's sharp flat-ended cylindrical indenter");
+  flat_punch
+      .def(py::init([](double radius_mm) { return FlatPunch{radius_mm}; }),
+           py::arg("radius_mm") = FlatPunch{}.radius_mm)
+      .def_readonly("radius_mm", &FlatPunch::radius_mm, "cylinder radius a [mm]")
+      .def("__repr__", [](const FlatPunch& p) { return indenter_repr(p); });
+  copyable(flat_punch);
 
   py::class_<Gent> gent(m, "Gent", "Gent law W/G = -(J_lim/2) ln(1 - (I1 - 3)/J_lim)");
   gent.def(py::init([](double j_lim) { return Gent{j_lim}; }), py::arg("j_lim") = Gent{}.j_lim)
@@ -299,21 +309,29 @@ void bind_problem(py::module_& m) {
       "paper's lubricated silicone membrane and 2 mm indenter.");
   problem
       .def(py::init([](const Geometry& g,
+                       const Indenter& indenter,
                        const Material& mat,
                        double friction,
                        double critical_i1,
                        const std::variant<StickCriterion, std::string>& stick,
                        const std::variant<PartTwoEquation, std::string>& equation) {
-             return Problem{
-                 g, mat, friction, critical_i1, stick_of(stick), part_two_equation_of(equation)};
+             return Problem{g,
+                            indenter,
+                            mat,
+                            friction,
+                            critical_i1,
+                            stick_of(stick),
+                            part_two_equation_of(equation)};
            }),
            py::arg("geometry") = defaults.geometry,
+           py::arg("indenter") = defaults.indenter,
            py::arg("material") = defaults.material,
            py::arg("friction") = defaults.friction,
            py::arg("critical_i1") = defaults.critical_i1,
            py::arg("stick") = defaults.stick,
            py::arg("part_two_equation") = defaults.part_two_equation)
       .def_readwrite("geometry", &Problem::geometry)
+      .def_readwrite("indenter", &Problem::indenter, "the probe (FlatPunch)")
       .def_readwrite("material", &Problem::material)
       .def_readwrite(
           "friction", &Problem::friction, "Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)")
@@ -347,9 +365,10 @@ void bind_problem(py::module_& m) {
           "Raise ValueError listing every invalid parameter")
       .def("__repr__", [](const Problem& p) {
         return fmt::format(
-            "Problem(geometry={}, material={}, friction={:g}, critical_i1={:g}, stick={}, "
-            "part_two_equation='{}')",
+            "Problem(geometry={}, indenter={}, material={}, friction={:g}, critical_i1={:g}, "
+            "stick={}, part_two_equation='{}')",
             geometry_repr(p.geometry),
+            indenter_repr(p.indenter),
             material_repr(p.material),
             p.friction,
             p.critical_i1,

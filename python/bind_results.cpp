@@ -170,7 +170,8 @@ void bind_results(py::module_& m) {
       .def_readonly("clamp_residual", &Equilibrium::clamp_residual)
       .def_readonly("shooting_evaluations", &Equilibrium::shooting_evaluations)
       .def_readonly("fields", &Equilibrium::fields)
-      .def("ok", &Equilibrium::ok)
+      .def_property_readonly(
+          "ok", &Equilibrium::ok, "True when converged (the same as status == Status.Converged)")
       .def("__repr__", &equilibrium_repr);
 
   py::class_<CurvePoint>(m, "CurvePoint", "One point of the loading curve")
@@ -208,6 +209,10 @@ void bind_results(py::module_& m) {
   py::class_<PuncturePrediction>(
       m, "PuncturePrediction", "The predicted puncture point", py::dynamic_attr())
       .def_readonly("found", &PuncturePrediction::found)
+      .def_property_readonly(
+          "ok",
+          [](const PuncturePrediction& p) { return p.found; },
+          "True when a puncture point was found (found)")
       .def_readonly("message", &PuncturePrediction::message, "why not, when not found")
       .def_readonly("force_n", &PuncturePrediction::force_n)
       .def_readonly("normalized_force", &PuncturePrediction::normalized_force)
@@ -254,7 +259,8 @@ void bind_results(py::module_& m) {
           "puncture",
           [](py::object self) { return member_with_problem(self, &LoadingCurve::puncture); },
           "the puncture point (PuncturePrediction)")
-      .def("ok", &LoadingCurve::ok)
+      .def_property_readonly(
+          "ok", &LoadingCurve::ok, "True when converged (the same as status == Status.Converged)")
       .def("__len__", [](const LoadingCurve& c) { return c.points.size(); })
       .def_property_readonly(
           "stage",

@@ -70,6 +70,10 @@ void bind_uniaxial(py::module_& m) {
 
   py::class_<UniaxialFit>(m, "UniaxialFit", "Least-squares fit of a uniaxial tensile test")
       .def_readonly("converged", &UniaxialFit::converged)
+      .def_property_readonly(
+          "ok",
+          [](const UniaxialFit& f) { return f.converged; },
+          "True when the fit converged (converged)")
       .def_readonly("message", &UniaxialFit::message)
       .def_readonly("law", &UniaxialFit::law)
       .def_readonly("material", &UniaxialFit::material, "the fit as a Material; None if invalid")

@@ -53,6 +53,10 @@ void bind_verification(py::module_& m) {
 
   py::class_<FeState>(m, "FeState", "A finite-element equilibrium at a prescribed depth")
       .def_readonly("converged", &FeState::converged)
+      .def_property_readonly(
+          "ok",
+          [](const FeState& s) { return s.converged; },
+          "True when the minimisation converged (converged)")
       .def_readonly("message", &FeState::message)
       .def_readonly("contact", &FeState::contact)
       .def_readonly("order", &FeState::order)
@@ -130,6 +134,8 @@ void bind_verification(py::module_& m) {
       .def_readonly("checks", &VerificationReport::checks)
       .def_readonly("elements", &VerificationReport::elements)
       .def_property_readonly("passed", &VerificationReport::passed)
+      .def_property_readonly(
+          "ok", &VerificationReport::passed, "True when no check failed (passed)")
       .def("count", &VerificationReport::count, py::arg("verdict"));
 
   m.def(

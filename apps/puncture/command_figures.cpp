@@ -110,7 +110,7 @@ json failure(Status status, const std::string& message) {
 json fig12a(const Problem& base) {
   json cases = json::array();
   Problem p = base;
-  p.geometry.indenter_radius_mm = kFig12RadiusRatio * base.geometry.clamp_radius_mm;
+  p.indenter = FlatPunch{kFig12RadiusRatio * base.geometry.clamp_radius_mm};
   const double force = kFig12NormalizedForce * force_scale_n(p);
   for (const auto equation : kEquations)
     for (const double mu : kFig12aFriction) {
@@ -138,7 +138,7 @@ json fig12a(const Problem& base) {
       cases.push_back(c);
     }
   return {{"normalized_force", kFig12NormalizedForce},
-          {"indenter_radius_mm", p.geometry.indenter_radius_mm},
+          {"indenter_radius_mm", radius_mm(p.indenter)},
           {"cases", cases}};
 }
 
@@ -149,7 +149,7 @@ json fig12b(const Problem& base) {
   for (const auto equation : kEquations)
     for (const double ratio : kFig12bRadiusRatio) {
       Problem p = base;
-      p.geometry.indenter_radius_mm = ratio * base.geometry.clamp_radius_mm;
+      p.indenter = FlatPunch{ratio * base.geometry.clamp_radius_mm};
       p.part_two_equation = equation;
       const double force = kFig12NormalizedForce * force_scale_n(p);
       json friction = json::array(), stretch = json::array(), configuration = json::array();
@@ -160,7 +160,7 @@ json fig12b(const Problem& base) {
         stretch.push_back(e.ok() ? number(e.part_three_stretch) : json(nullptr));
         configuration.push_back(e.ok() ? configuration_token(e.configuration) : "failed");
       }
-      series.push_back({{"indenter_radius_mm", p.geometry.indenter_radius_mm},
+      series.push_back({{"indenter_radius_mm", radius_mm(p.indenter)},
                         {"radius_ratio", ratio},
                         {"part_two_equation", to_string(equation)},
                         {"friction", friction},
@@ -202,7 +202,7 @@ json fig13(const Problem& base, int points) {
   json panels = json::array();
   for (const auto& panel : kFig13) {
     Problem p = base;
-    p.geometry.indenter_radius_mm = panel.indenter_radius_mm;
+    p.indenter = FlatPunch{panel.indenter_radius_mm};
     p.friction = panel.friction;
     json curves = json::array();
     for (const auto equation : kEquations) {

@@ -54,7 +54,7 @@ json stick_json(const StickCriterion& s) {
 
 json problem_json(const Problem& p, std::string_view calibrated) {
   json out = {{"clamp_radius_mm", finite(p.geometry.clamp_radius_mm, "clamp radius")},
-              {"indenter_radius_mm", finite(p.geometry.indenter_radius_mm, "indenter radius")},
+              {"indenter_radius_mm", finite(radius_mm(p.indenter), "indenter radius")},
               {"thickness_mm", finite(p.geometry.thickness_mm, "thickness")},
               {"material", material_json(p.material, calibrated != "jlim")}};
   if (calibrated != "friction") out["friction"] = finite(p.friction, "friction");

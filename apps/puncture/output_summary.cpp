@@ -25,7 +25,7 @@ void inputs(std::string& out, const Problem& p) {
   const auto& g = p.geometry;
   out += "Inputs\n";
   line(out, "clamp radius A", num(g.clamp_radius_mm, "clamp radius") + " mm");
-  line(out, "indenter radius a", num(g.indenter_radius_mm, "indenter radius") + " mm");
+  line(out, "indenter radius a", num(radius_mm(p.indenter), "indenter radius") + " mm");
   line(out, "thickness H", num(g.thickness_mm, "thickness") + " mm");
   line(out, "material", describe(p.material));
   line(out, "friction mu'", num(p.friction, "friction"));

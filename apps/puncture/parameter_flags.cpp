@@ -14,7 +14,7 @@ namespace {
 
 constexpr std::array<std::pair<std::string_view, std::string_view>, 18> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
-    {"geometry.indenter_radius_mm", "--indenter-radius"},
+    {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
     {"clamp_radius_mm", "--clamp-radius"},
     {"thickness_mm", "--thickness"},

@@ -114,7 +114,7 @@ Problem make_problem(const ProblemFlags& f) {
   std::vector<std::string> errors;
   Problem p;
   p.geometry.clamp_radius_mm = f.clamp_radius_mm;
-  p.geometry.indenter_radius_mm = f.indenter_radius_mm;
+  p.indenter = FlatPunch{f.indenter_radius_mm};
   p.geometry.thickness_mm = f.thickness_mm;
   p.material.shear_modulus_mpa = f.shear_modulus_mpa;
   p.material.law = law_of(f, errors);

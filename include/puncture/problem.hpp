@@ -4,15 +4,16 @@
 #include <string>
 #include <vector>
 
+#include "puncture/indenter.hpp"
 #include "puncture/material.hpp"
 #include "puncture/outcome.hpp"
 
 namespace puncture {
 
+// The membrane's dimensions.
 struct Geometry {
-  double clamp_radius_mm = 25.0;    // inner radius of the clamping rings, A [mm]
-  double indenter_radius_mm = 2.0;  // radius of the flat-ended cylindrical indenter, a [mm]
-  double thickness_mm = 0.2;        // undeformed membrane thickness, H [mm]
+  double clamp_radius_mm = 25.0;  // inner radius of the clamping rings, A [mm]
+  double thickness_mm = 0.2;      // undeformed membrane thickness, H [mm]
 };
 
 // When the membrane, held at the indenter's edge at first, starts to slide over it.  Coulomb
@@ -40,6 +41,7 @@ enum class PartTwoEquation {
 
 struct Problem {
   Geometry geometry;
+  Indenter indenter = FlatPunch{2.0};  // the paper's 2 mm flat punch
   Material material;
   double friction = 0.18;     // Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)
   double critical_i1 = 95.2;  // I1 at which the membrane punctures (inflation test, §2.3)

@@ -84,7 +84,7 @@ def _info_from_problem(problem):
     g = problem.geometry
     return {
         "clamp_radius_mm": g.clamp_radius_mm,
-        "indenter_radius_mm": g.indenter_radius_mm,
+        "indenter_radius_mm": problem.indenter.radius_mm,
         "thickness_mm": g.thickness_mm,
         "friction": problem.friction,
         "critical_i1": problem.critical_i1,

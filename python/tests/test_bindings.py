@@ -126,7 +126,7 @@ def test_arrays_outlive_their_result():
 
 def test_curve_columns_are_consistent():
     curve = pu.loading_curve(pu.Problem(), points=30)
-    assert curve.ok() and len(curve) == 30 and len(curve.points) == 30
+    assert curve.ok and len(curve) == 30 and len(curve.points) == 30
     for name in ["depth_mm", "force_n", "normalized_force", "part_three_stretch",
                  "part_two_length_mm", "corner_slope_rad", "max_first_invariant"]:
         a = getattr(curve, name)
@@ -161,20 +161,20 @@ def test_progress_callback_and_threads():
 
 
 def test_results_carry_their_problem():
-    problem = pu.Problem(geometry=pu.Geometry(indenter_radius_mm=1.0))
+    problem = pu.Problem(indenter=pu.FlatPunch(radius_mm=1.0))
     curve = pu.loading_curve(problem, points=5)
     problem.friction = 0.5  # the result keeps its own copy
     assert curve.problem.friction == 0.18
-    assert curve.problem.geometry.indenter_radius_mm == 1.0
-    assert curve.puncture.problem.geometry.indenter_radius_mm == 1.0
-    assert curve.puncture.state.problem.geometry.indenter_radius_mm == 1.0
+    assert curve.problem.indenter.radius_mm == 1.0
+    assert curve.puncture.problem.indenter.radius_mm == 1.0
+    assert curve.puncture.state.problem.indenter.radius_mm == 1.0
 
 
 def test_problem_defaults_match_cli(cli):
     inputs = cli.json("puncture")["inputs"]
     p = pu.Problem()
     assert p.geometry.clamp_radius_mm == inputs["clamp_radius_mm"]
-    assert p.geometry.indenter_radius_mm == inputs["indenter_radius_mm"]
+    assert p.indenter.radius_mm == inputs["indenter_radius_mm"]
     assert p.geometry.thickness_mm == inputs["thickness_mm"]
     assert p.material.shear_modulus_mpa == inputs["material"]["shear_modulus_mpa"]
     assert p.material.law_name == inputs["material"]["law"]
@@ -187,19 +187,21 @@ def test_problem_defaults_match_cli(cli):
 
 def test_problem_editing_and_copies():
     p = pu.Problem()
-    p.geometry.indenter_radius_mm = 1.0
+    p.indenter = pu.FlatPunch(radius_mm=1.0)
+    p.geometry.thickness_mm = 0.3
     p.material = pu.Material.mooney_rivlin(shear_modulus_mpa=0.1, alpha=0.2)
     p.stick = "depth:3"
     p.stick.threshold = 4.0
     p.part_two_equation = pu.PartTwoEquation.PaperEq18
-    assert p.geometry.indenter_radius_mm == 1.0
+    assert p.indenter.radius_mm == 1.0 and p.geometry.thickness_mm == 0.3
     assert p.material.law_name == "mooney-rivlin" and p.material.alpha == 0.2
     assert p.material.j_lim is None and isinstance(p.material.law, pu.MooneyRivlin)
     assert p.stick.rule == pu.StickRule.Depth and p.stick.threshold == 4.0
     assert p.part_two_equation.token == "paper-eq18"
     q = copy.deepcopy(p)
-    q.geometry.indenter_radius_mm = 3.0
-    assert p.geometry.indenter_radius_mm == 1.0
+    q.geometry.thickness_mm = 0.5
+    q.indenter = pu.FlatPunch(3.0)
+    assert p.geometry.thickness_mm == 0.3 and p.indenter.radius_mm == 1.0
     assert "mooney-rivlin" in p.material.description
     assert repr(pu.Problem()).startswith("Problem(geometry=Geometry(clamp_radius_mm=25")
     assert pu.StickCriterion("edge-tension:0.02").rule == pu.StickRule.EdgeTension
@@ -239,4 +241,14 @@ def test_solver_options_are_used():
     options = pu.SolverOptions()
     options.record_fields = False
     state = pu.solve_at_force(pu.Problem(), 0.3, options=options)
-    assert len(state.fields) == 0 and state.ok()
+    assert len(state.fields) == 0 and state.ok
+
+
+def test_every_result_has_ok_as_a_property():
+    # `if result.ok:` must test the outcome: a bound method would always be true.
+    problem = pu.Problem()
+    state = pu.solve_at_force(problem, 0.3)
+    curve = pu.loading_curve(problem, points=5)
+    for result in (state, curve, curve.puncture, pu.inflate_at_pole_stretch(problem, 2.0)):
+        assert result.ok is True
+    assert type(pu.Equilibrium.ok) is property and type(pu.PuncturePrediction.ok) is property

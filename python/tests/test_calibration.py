@@ -103,7 +103,7 @@ def test_burst_csv_errors_match_cli(cli):
 
 # ----- friction from the hole ---------------------------------------------------------------
 
-DRY_1MM = dict(geometry=pu.Geometry(indenter_radius_mm=1.0))
+DRY_1MM = dict(indenter=pu.FlatPunch(radius_mm=1.0))
 
 
 def test_friction_matches_cli(cli):

@@ -18,7 +18,7 @@ def gent_curve():
 
 def test_state_has_numpy_fields_from_pole_to_clamp():
     s = pu.inflate_at_pole_stretch(pu.InflationProblem(), 2.0)
-    assert s.ok() and s.status == pu.Status.Converged
+    assert s.ok and s.status == pu.Status.Converged
     f = s.fields
     assert isinstance(f.radius_mm, np.ndarray) and not f.radius_mm.flags.writeable
     assert len(f) == f.first_invariant.size > 200
@@ -32,7 +32,7 @@ def test_state_has_numpy_fields_from_pole_to_clamp():
 
 def test_curve_columns_extrema_and_burst(gent_curve):
     c = gent_curve
-    assert c.ok() and len(c) == 40
+    assert c.ok and len(c) == 40
     assert isinstance(c.pressure_mpa, np.ndarray) and c.pressure_mpa.size == 40
     assert np.all(np.diff(c.volume_mm3) > 0)
     assert [e.kind for e in c.extrema] == [pu.ExtremumKind.Maximum, pu.ExtremumKind.Minimum]
@@ -65,7 +65,7 @@ def test_every_state_at_a_pressure():
     assert len(two.states) == 2
     assert two.states[0].pole_stretch < limit.state.pole_stretch < two.states[1].pole_stretch
     none = pu.inflate_at_pressure(nh, 1.05 * limit.state.pressure_mpa)
-    assert none.ok() and len(none) == 0 and "highest pressure" in none.message
+    assert none.ok and len(none) == 0 and "highest pressure" in none.message
 
 
 @pytest.mark.parametrize("call,match", [

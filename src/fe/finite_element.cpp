@@ -110,7 +110,7 @@ FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::Vector
                             problem.material.shear_modulus_mpa * problem.geometry.thickness_mm * A *
                             A;
   state.unknowns = mesh.unknowns;
-  state.corner_reference_radius_mm = problem.geometry.indenter_radius_mm;
+  state.corner_reference_radius_mm = radius_mm(problem.indenter);
   state.part_two_top_reference_radius_mm = state.corner_reference_radius_mm;
   for (const MeshPart& part : mesh.parts) {
     FePart out;
@@ -143,7 +143,7 @@ FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::Vector
     }
     state.parts.push_back(std::move(out));
   }
-  state.part_three_stretch = problem.geometry.indenter_radius_mm / state.corner_reference_radius_mm;
+  state.part_three_stretch = radius_mm(problem.indenter) / state.corner_reference_radius_mm;
   return state;
 }
 
@@ -360,7 +360,7 @@ StepResult solve_step(const Problem& problem, Layout& layout, const Scaled& s,
                       const FeState* previous, FeContact contact, const FeOptions& options,
                       bool precise) {
   StepResult step = solve_step_in_layout(problem, layout, s, previous, contact, options, precise);
-  if (step.converged && crosses_side(step.state, problem.geometry.indenter_radius_mm)) {
+  if (step.converged && crosses_side(step.state, radius_mm(problem.indenter))) {
     step.converged = false;
     step.message =
         "the free membrane crosses the indenter's side (too few elements for this state?)";
@@ -397,7 +397,7 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
     last = d;
   }
   Scaled s;
-  s.a = problem.geometry.indenter_radius_mm / A;
+  s.a = radius_mm(problem.indenter) / A;
   Layout layout = contact == FeContact::Held ? Layout::Held : Layout::SlipWithoutSide;
   std::vector<FeState> states;
   std::optional<FeState> previous;

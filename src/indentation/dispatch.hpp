@@ -2,6 +2,7 @@
 // From the user's Problem to the solver: the material law and the indenter are chosen at run
 // time (std::variant) and dispatched here, once per solve, to the shooting for that law and that
 // indenter's contact model.  A new indenter adds its contact model here.
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -19,25 +20,31 @@ inline ShootingSettings shooting_settings(const SolverOptions& o) {
           o.field_points};
 }
 
-inline FlatPunchSettings flat_punch_settings(const Problem& p) {
-  return {
-      p.geometry.indenter_radius_mm / p.geometry.clamp_radius_mm, p.friction, p.part_two_equation};
+// Each indenter shape (an alternative of Indenter): its contact model, and that model's settings
+// from the problem.  A new shape adds one overload of each.
+template <class Law>
+FlatPunchContact<Law> contact_model_of(const FlatPunch&);  // declared for its type only
+inline FlatPunchSettings contact_settings(const Problem& p, const FlatPunch& punch) {
+  return {punch.radius_mm / p.geometry.clamp_radius_mm, p.friction, p.part_two_equation};
 }
 
-// fn(shooting) with the shooting of the problem's law and indenter; every law gives fn's result
+template <class Law, class Shape>
+using ContactModelOf = decltype(contact_model_of<Law>(std::declval<const Shape&>()));
+
+// fn(shooting) with the shooting of the problem's law and indenter; every pair gives fn's result
 // the same type.
 template <class Fn>
 decltype(auto) with_shooting(const Problem& problem, const SolverOptions& options, Fn&& fn) {
   const ShootingSettings settings = shooting_settings(options);
-  const FlatPunchSettings punch = flat_punch_settings(problem);
   return std::visit(
-      [&](const auto& law) -> decltype(auto) {
-        using Law = std::decay_t<decltype(law)>;
-        const IndentationShooting<FlatPunchContact<Law>> shooting(
-            law, settings, punch, options.record_fields);
+      [&](const auto& law, const auto& shape) -> decltype(auto) {
+        using Contact = ContactModelOf<std::decay_t<decltype(law)>, std::decay_t<decltype(shape)>>;
+        const IndentationShooting<Contact> shooting(
+            law, settings, contact_settings(problem, shape), options.record_fields);
         return std::forward<Fn>(fn)(shooting);
       },
-      problem.material.law);
+      problem.material.law,
+      problem.indenter);
 }
 
 }  // namespace puncture::detail

@@ -85,7 +85,7 @@ void push_point(MembraneFields& m, int part, double r_ref, double radius, double
 MembraneFields fields_of(const Problem& p, const ScaledSolution& sol) {
   MembraneFields m;
   const double big_a = p.geometry.clamp_radius_mm;
-  const double a = p.geometry.indenter_radius_mm / big_a;
+  const double a = radius_mm(p.indenter) / big_a;
   const double g = p.material.shear_modulus_mpa;
   const double depth = sol.depth * big_a;
   // Part III: homogeneous under the flat tip (unstretched when held).
@@ -111,12 +111,12 @@ MembraneFields fields_of(const Problem& p, const ScaledSolution& sol) {
     const double r_ref = (*it)[0], l1 = (*it)[1], l2 = a / r_ref;
     const auto st = membrane_stress(p.material.law, l1, l2);
     const double pressure =
-        st.s2 * g * p.geometry.thickness_mm / (l1 * p.geometry.indenter_radius_mm);  // Eq. (16)
+        st.s2 * g * p.geometry.thickness_mm / (l1 * radius_mm(p.indenter));  // Eq. (16)
     const double z = depth - (sol.part_two_length - (*it)[2]) * big_a;
     push_point(m,
                2,
                r_ref * big_a,
-               p.geometry.indenter_radius_mm,
+               radius_mm(p.indenter),
                z,
                detail::kHalfPi,
                l1,

@@ -61,17 +61,16 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
   const auto& g = p.geometry;
   using detail::require_positive;
   require_positive(errors, "geometry.clamp_radius_mm", "clamp radius", g.clamp_radius_mm, "mm");
-  require_positive(
-      errors, "geometry.indenter_radius_mm", "indenter radius", g.indenter_radius_mm, "mm");
+  const double a = radius_mm(p.indenter);
+  require_positive(errors, "indenter.radius_mm", "indenter radius", a, "mm");
   require_positive(errors, "geometry.thickness_mm", "thickness", g.thickness_mm, "mm");
-  if (std::isfinite(g.indenter_radius_mm) && std::isfinite(g.clamp_radius_mm) &&
-      g.indenter_radius_mm > 0.0 && g.clamp_radius_mm > 0.0 &&
-      g.indenter_radius_mm >= g.clamp_radius_mm)
+  if (std::isfinite(a) && std::isfinite(g.clamp_radius_mm) && a > 0.0 &&
+      g.clamp_radius_mm > 0.0 && a >= g.clamp_radius_mm)
     errors.push_back(
-        {"geometry.indenter_radius_mm",
+        {"indenter.radius_mm",
          fmt::format("indenter radius must be smaller than the clamp radius ({} mm), got {} mm",
                      g.clamp_radius_mm,
-                     g.indenter_radius_mm)});
+                     a)});
   detail::append_material_errors(errors, p.material);
   if (!std::isfinite(p.friction) || p.friction < 0.0)
     errors.push_back(

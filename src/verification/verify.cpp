@@ -228,7 +228,7 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
 
 // F A^2 / (E H delta^3) of the full solver at a small force against the Foppl coefficient.
 void compare_small_deflection(const Problem& problem, Checks& checks) {
-  const double a_over_A = problem.geometry.indenter_radius_mm / problem.geometry.clamp_radius_mm;
+  const double a_over_A = radius_mm(problem.indenter) / problem.geometry.clamp_radius_mm;
   for (const FeContact contact : {FeContact::Held, FeContact::Frictionless}) {
     const auto edge =
         contact == FeContact::Held ? verification::DiscEdge::Held : verification::DiscEdge::Sliding;

@@ -21,7 +21,7 @@ SolverOptions quiet() {
 // The paper's dry test: 1 mm indenter, mu' = 1.95 (§4.2).
 Problem dry_small_indenter() {
   Problem p;
-  p.geometry.indenter_radius_mm = 1.0;
+  p.indenter = FlatPunch{1.0};
   p.friction = 1.95;
   return p;
 }
@@ -41,7 +41,7 @@ TEST(FrictionFromHole, RecoversFrictionAtTheMeasuredForce) {
   for (const auto& [indenter, mu, force] :
        {std::tuple{1.0, 1.95, 1.5}, std::tuple{2.0, 0.18, 0.5}, std::tuple{1.0, 0.6, 0.8}}) {
     Problem p = dry_small_indenter();
-    p.geometry.indenter_radius_mm = indenter;
+    p.indenter = FlatPunch{indenter};
     const double ratio = stretch_at_force(p, mu, force);
     p.friction = 7.0;  // ignored: it is what is calibrated
     const auto e = friction_from_hole(p, {ratio, 0.0, force}, HoleMethod::AtMeasuredForce);
@@ -74,7 +74,7 @@ TEST(FrictionFromHole, AtPunctureTheEstimateDoesNotDependOnTheIndenter) {
   // the material, mu' and the critical I1 only, so the hole gives the same mu' for any indenter.
   Problem small = dry_small_indenter();
   Problem large = small;
-  large.geometry.indenter_radius_mm = 3.0;
+  large.indenter = FlatPunch{3.0};
   const HoleMeasurement hole{1.58, 0.0, std::nullopt};
   const auto a = friction_from_hole(small, hole, HoleMethod::AtPredictedPuncture);
   const auto b = friction_from_hole(large, hole, HoleMethod::AtPredictedPuncture);
@@ -146,7 +146,7 @@ TEST(FrictionFromHole, RefusesInvalidInput) {
   EXPECT_THROW(friction_from_hole(p, {1.5, 0.1, 0.0}, HoleMethod::AtMeasuredForce),
                std::invalid_argument);
   Problem bad = p;
-  bad.geometry.indenter_radius_mm = 30.0;
+  bad.indenter = FlatPunch{30.0};
   EXPECT_THROW(friction_from_hole(bad, {1.5, 0.1, 1.0}, HoleMethod::AtMeasuredForce),
                std::invalid_argument);
 }

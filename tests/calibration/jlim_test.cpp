@@ -33,7 +33,7 @@ constexpr double kRecoveryTol = 1e-6;
 TEST(JLimFromPunctureForce, RecoversJLim) {
   Problem lubricated;  // 2 mm, mu' = 0.18
   Problem dry;
-  dry.geometry.indenter_radius_mm = 1.0;
+  dry.indenter = FlatPunch{1.0};
   dry.friction = 1.95;
   for (const auto& [problem, j_lim] :
        {std::pair{lubricated, 110.0}, std::pair{dry, 125.0}, std::pair{lubricated, 400.0}}) {

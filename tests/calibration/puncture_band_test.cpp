@@ -44,7 +44,7 @@ BandRanges paper_ranges() { return paper_ranges_for(Problem{}); }
 
 Problem dry_small_indenter() {
   Problem p;
-  p.geometry.indenter_radius_mm = 1.0;
+  p.indenter = FlatPunch{1.0};
   p.friction = 1.95;
   return p;
 }

@@ -59,7 +59,7 @@ double log_uniform(double lo, double hi) { return std::exp(uniform(std::log(lo),
 Problem valid_problem() {
   Problem p;
   p.geometry.clamp_radius_mm = 25.0;
-  p.geometry.indenter_radius_mm = 25.0 * uniform(0.01, 0.3);
+  p.indenter = FlatPunch{25.0 * uniform(0.01, 0.3)};
   p.geometry.thickness_mm = log_uniform(0.02, 2.0);
   p.material.shear_modulus_mpa = log_uniform(0.005, 5.0);
   double i1_room = 200.0;  // how far above 3 the critical I1 may go
@@ -106,7 +106,7 @@ std::string describe(const Problem& p) {
   return fmt::format(
       "a = {:.10g} mm, A = {:.10g} mm, H = {:.10g} mm, {}, friction {:.10g}, critical I1 {:.10g}, "
       "stick {} {:.10g}, {}",
-      p.geometry.indenter_radius_mm,
+      radius_mm(p.indenter),
       p.geometry.clamp_radius_mm,
       p.geometry.thickness_mm,
       describe(p.material),
@@ -193,7 +193,7 @@ void check_identities(const Problem& p, const Equilibrium& e) {
 
   // Continuity (the parts are assembled from the same numbers: round-off, 1e-10 relative).
   constexpr double kRel = 1e-10;
-  const double a = p.geometry.indenter_radius_mm;
+  const double a = radius_mm(p.indenter);
   const std::size_t edge = three.back(), out = two.empty() ? one.front() : two.front();
   for (const std::size_t i : three) {
     RC_ASSERT(std::abs(m.deflection_mm[i] - e.depth_mm) <= kRel * std::max(1.0, e.depth_mm));
@@ -322,8 +322,8 @@ RC_GTEST_PROP(SolverProperties, InvalidInputIsReportedNeverThrown, ()) {
       p.geometry.clamp_radius_mm = bad();
       break;
     case 1:
-      p.geometry.indenter_radius_mm = *rc::gen::element(
-          -1.0, 0.0, kNaN, p.geometry.clamp_radius_mm, 2.0 * p.geometry.clamp_radius_mm);
+      p.indenter = FlatPunch{*rc::gen::element(
+          -1.0, 0.0, kNaN, p.geometry.clamp_radius_mm, 2.0 * p.geometry.clamp_radius_mm)};
       break;
     case 2:
       p.geometry.thickness_mm = bad();
@@ -426,7 +426,7 @@ TEST(SolverPropertyRegressions, StickSlipBoundaryReportsInvalidInput) {
 // that end, with I1 = 18.5223 < 18.52276.  No puncture of the held membrane exists there.
 TEST(SolverPropertyRegressions, HeldMembraneEndingBelowTheCriticalI1DoesNotPuncture) {
   Problem p;
-  p.geometry.indenter_radius_mm = 0.25013775;
+  p.indenter = FlatPunch{0.25013775};
   p.geometry.thickness_mm = 0.02;
   p.material = Material{0.005, MooneyRivlin{0.161205}};
   p.friction = 0.0;

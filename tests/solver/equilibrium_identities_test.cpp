@@ -188,7 +188,7 @@ TEST_P(AnyConfiguration, ClampCondition) {
 // continuous across a sharp corner, z = depth; along Part II, r = a and phi = pi/2; at the Part
 // I/II boundary: R, lambda1, lambda2 and z continuous and phi = pi/2.
 TEST_P(AnyConfiguration, ContinuityAtPartBoundaries) {
-  const double a = problem_.geometry.indenter_radius_mm;
+  const double a = radius_mm(problem_.indenter);
   const double depth = e_.depth_mm;
   constexpr double kRel = 1e-12;
   const std::size_t tip_edge = three_.back(), out = corner_outside();
@@ -298,7 +298,7 @@ TEST_P(PartTwoConfiguration, RingBalanceOnTheSide) {
 // radius, P = s2 H / (lambda1 a), and the friction traction mu P; zero off the side.  Recomputed
 // from the other fields: round-off only, 1e-12 relative.
 TEST_P(PartTwoConfiguration, ContactPressureFromHoopTension) {
-  const double h = problem_.geometry.thickness_mm, a = problem_.geometry.indenter_radius_mm;
+  const double h = problem_.geometry.thickness_mm, a = radius_mm(problem_.indenter);
   for (std::size_t i : two_) {
     const double p = m().hoop_stress_mpa[i] * h / (m().radial_stretch[i] * a);
     EXPECT_GT(p, 0.0) << "the side must press on the membrane";

@@ -27,7 +27,7 @@ TEST(ZeroLoad, FieldsCoverTheWholeFlatMembrane) {
   for (const MaterialLaw law :
        {MaterialLaw{Gent{125.0}}, MaterialLaw{NeoHookean{}}, MaterialLaw{MooneyRivlin{0.2}}}) {
     const Problem p = paper_problem(law);
-    const double a = p.geometry.indenter_radius_mm, big_a = p.geometry.clamp_radius_mm;
+    const double a = radius_mm(p.indenter), big_a = p.geometry.clamp_radius_mm;
     for (const Stage stage : {Stage::Stick, Stage::Slip}) {
       for (const bool by_depth : {true, false}) {
         SCOPED_TRACE(fmt::format("{}, {} stage, by {}",
@@ -162,7 +162,7 @@ TEST(FrictionlessPuncture, ForceIsLinearInIndenterRadius) {
   double worst = 0.0;
   for (double a : {1.0, 2.0, 3.0, 4.0}) {
     Problem p = base;
-    p.geometry.indenter_radius_mm = a;
+    p.indenter = FlatPunch{a};
     const auto punct = predict_puncture(p);
     ASSERT_TRUE(punct.found) << punct.message;
     EXPECT_EQ(punct.configuration, Configuration::SlipWithPartTwo) << "a = " << a;

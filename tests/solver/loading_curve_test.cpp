@@ -306,7 +306,7 @@ void PrintTo(const RouteCase& c, std::ostream* os) { *os << c.name; }
 class PunctureRoutes : public ::testing::TestWithParam<RouteCase> {};
 
 Problem with_indenter(Problem p, double a) {
-  p.geometry.indenter_radius_mm = a;
+  p.indenter = FlatPunch{a};
   return p;
 }
 

@@ -108,7 +108,7 @@ TEST(PluggableContact, BondedDiscGivesTheAlwaysHeldFlatPunch) {
   const IndentationShooting<BondedDiscContact<Gent>> shooting(
       std::get<Gent>(disc_problem.material.law),
       shooting_settings(options),
-      {disc_problem.geometry.indenter_radius_mm / disc_problem.geometry.clamp_radius_mm});
+      {radius_mm(disc_problem.indenter) / disc_problem.geometry.clamp_radius_mm});
   const LoadingCurve disc = curve_to_puncture(disc_problem, shooting, curve, options);
   const LoadingCurve punch = loading_curve(held, curve, options);
 

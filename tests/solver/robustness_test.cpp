@@ -98,7 +98,7 @@ TEST(RandomInputs, EveryResultIsFiniteOrExplained) {
   int converged = 0, total = 0;
   for (int sample = 0; sample < 30; ++sample) {
     Problem p;
-    p.geometry.indenter_radius_mm = uniform(gen, 0.5, 5.0);
+    p.indenter = FlatPunch{uniform(gen, 0.5, 5.0)};
     p.friction = uniform(gen, 0.0, 3.0);
     const double j_lim = uniform(gen, 30.0, 300.0);
     p.material.law = Gent{j_lim};
@@ -107,7 +107,7 @@ TEST(RandomInputs, EveryResultIsFiniteOrExplained) {
     const double f = uniform(gen, 0.01, 2.0), depth = uniform(gen, 1.0, 60.0);
     ASSERT_TRUE(validation_errors(p).empty()) << validation_errors(p).front().message;
     const std::string what = "sample " + std::to_string(sample) +
-                             ": a = " + std::to_string(p.geometry.indenter_radius_mm) +
+                             ": a = " + std::to_string(radius_mm(p.indenter)) +
                              " mm, mu' = " + std::to_string(p.friction) +
                              ", J_lim = " + std::to_string(j_lim) +
                              ", G = " + std::to_string(p.material.shear_modulus_mpa);
@@ -165,7 +165,7 @@ TEST(FieldDensity, RecordedFieldsAtAnyDensity) {
 // not bracket are reported and the curve reaches the puncture (the critical I1 at its end).
 TEST(NoThrow, PartTwoSearchThatDoesNotBracketIsAStatus) {
   Problem p;
-  p.geometry.indenter_radius_mm = 0.25;
+  p.indenter = FlatPunch{0.25};
   p.geometry.thickness_mm = 0.02;
   p.material.shear_modulus_mpa = 0.005;
   p.material.law = MooneyRivlin{0.095803};

@@ -22,7 +22,7 @@ TEST(Trends, PunctureForceRisesWithIndenterRadius) {
   std::vector<double> forces;
   for (double a : {1.0, 2.0, 3.0, 4.0}) {
     Problem p = paper_problem();
-    p.geometry.indenter_radius_mm = a;
+    p.indenter = FlatPunch{a};
     const auto punct = predict_puncture(p);
     ASSERT_TRUE(punct.found) << "a = " << a << " mm: " << punct.message;
     forces.push_back(punct.force_n);
@@ -52,7 +52,7 @@ TEST(Trends, PunctureForceRisesWithFriction) {
 // falls as the friction coefficient grows (the corner holds the membrane back).
 TEST(Trends, PartThreeStretchFallsWithFriction) {
   Problem p = paper_problem();
-  ASSERT_DOUBLE_EQ(p.geometry.indenter_radius_mm / p.geometry.clamp_radius_mm, 0.08);
+  ASSERT_DOUBLE_EQ(radius_mm(p.indenter) / p.geometry.clamp_radius_mm, 0.08);
   std::vector<double> stretch;
   const std::vector<double> frictions = {0.0, 0.18, 0.5, 1.0, 1.95, 3.0};
   for (double mu : frictions) {

@@ -26,7 +26,7 @@ Stage stage_of(FeContact contact) {
 
 Problem problem_for(double indenter_radius_mm, const MaterialLaw& law, FeContact contact) {
   Problem p;
-  p.geometry.indenter_radius_mm = indenter_radius_mm;
+  p.indenter = FlatPunch{indenter_radius_mm};
   p.material.law = law;
   p.friction = 0.0;
   if (contact == FeContact::Held) p.stick.rule = StickRule::Always;
@@ -217,7 +217,7 @@ TEST(FiniteElementEnergy, ForceIsTheDerivativeOfTheStoredEnergy) {
 TEST(FiniteElementClosedForm, FrictionlessNeoHookeanForceSaturatesAtTwoPiGHa) {
   const Problem p = problem_for(2.0, NeoHookean{}, FeContact::Frictionless);
   const double saturation = 2.0 * test::kPi * p.material.shear_modulus_mpa *
-                            p.geometry.thickness_mm * p.geometry.indenter_radius_mm;
+                            p.geometry.thickness_mm * radius_mm(p.indenter);
   FeOptions options;
   options.elements = 96;
   const auto states = fe_solve_at_depths(p, {14.0, 15.0, 16.0}, FeContact::Frictionless, options);
@@ -249,7 +249,7 @@ TEST(FiniteElementInput, RejectsInvalidOptionsAndDepths) {
   EXPECT_THROW(fe_solve_at_depth(p, -1.0, FeContact::Held), std::invalid_argument);
   EXPECT_THROW(fe_solve_at_depth(p, std::nan(""), FeContact::Held), std::invalid_argument);
   Problem invalid;
-  invalid.geometry.indenter_radius_mm = 30.0;  // larger than the clamp
+  invalid.indenter = FlatPunch{30.0};  // larger than the clamp
   EXPECT_THROW(fe_solve_at_depth(invalid, 5.0, FeContact::Held), std::invalid_argument);
 }
 

@@ -53,8 +53,8 @@ std::string radius_name(const ::testing::TestParamInfo<double>& info) {
 
 TEST_P(FopplLimit, FullSolverApproachesFopplAsForceVanishes) {
   Problem p;
-  p.geometry.indenter_radius_mm = GetParam();
-  const double ratio = p.geometry.indenter_radius_mm / p.geometry.clamp_radius_mm;
+  p.indenter = FlatPunch{GetParam()};
+  const double ratio = radius_mm(p.indenter) / p.geometry.clamp_radius_mm;
   for (const auto [stage, edge] :
        {std::pair{Stage::Stick, DiscEdge::Held}, std::pair{Stage::Slip, DiscEdge::Sliding}}) {
     const double c = foppl_coefficient(ratio, edge);

@@ -53,7 +53,7 @@ std::string material_without(const Material& m, bool j_lim_calibrated) {
 void problem_lines(std::string& out, const Problem& p, std::string_view calibrated) {
   const auto& g = p.geometry;
   line(out, "clamp radius A", num(g.clamp_radius_mm, "clamp radius") + " mm");
-  line(out, "indenter radius a", num(g.indenter_radius_mm, "indenter radius") + " mm");
+  line(out, "indenter radius a", num(radius_mm(p.indenter), "indenter radius") + " mm");
   line(out, "thickness H", num(g.thickness_mm, "thickness") + " mm");
   line(out, "material", material_without(p.material, calibrated == "jlim"));
   if (calibrated != "friction") line(out, "friction mu'", num(p.friction, "friction"));

@@ -1,0 +1,29 @@
+#include "puncture/indenter.hpp"
+
+#include <fmt/format.h>
+
+namespace puncture {
+
+namespace {
+
+template <class... Shapes>
+struct Overloaded : Shapes... {
+  using Shapes::operator()...;
+};
+template <class... Shapes>
+Overloaded(Shapes...) -> Overloaded<Shapes...>;
+
+}  // namespace
+
+double radius_mm(const Indenter& indenter) {
+  return std::visit(Overloaded{[](const FlatPunch& p) { return p.radius_mm; }}, indenter);
+}
+
+std::string describe(const Indenter& indenter) {
+  return std::visit(Overloaded{[](const FlatPunch& p) {
+                      return fmt::format("flat punch, radius {:g} mm", p.radius_mm);
+                    }},
+                    indenter);
+}
+
+}  // namespace puncture
