@@ -18,6 +18,10 @@ enum class Configuration {
 
 enum class Stage { Stick, Slip };
 
+// The parts of the membrane (docs/model.md): the free membrane, the part wrapped on the
+// indenter's side and the part under its tip.  The values are the part numbers of the fields.
+enum class MembranePart { Free = 1, Side = 2, Tip = 3 };
+
 std::string to_string(Configuration configuration);
 // Machine-readable name, as written in CSV and JSON: "slip_with_part_two" and so on.
 std::string to_token(Configuration configuration);
@@ -60,6 +64,7 @@ struct Equilibrium {
   double max_first_invariant = 3.0;  // largest I1 in the membrane: where a crack starts
   double max_first_invariant_reference_radius_mm = 0.0;  // where it is: reference radius R
   double max_first_invariant_radius_mm = 0.0;            // ... and current radius r
+  MembranePart max_first_invariant_part = MembranePart::Free;  // ... in this part
   double clamp_residual = 0.0;                           // |lambda2(A) - 1| reached by the shooting
   int shooting_evaluations = 0;                          // integrations of Part I used
   MembraneFields fields;

@@ -171,6 +171,12 @@ Equilibrium to_physical(const Problem& p, const ScaledSolution& sol, Stage stage
   e.max_first_invariant_reference_radius_mm = (in_part_three ? sol.r_corner : sol.max_i1_r) * big_a;
   e.max_first_invariant_radius_mm =
       (in_part_three ? sol.r_corner * sol.part_three_stretch : sol.max_i1_radius) * big_a;
+  // The flat punch's parts: Part II spans the side from the corner to its top.
+  e.max_first_invariant_part =
+      in_part_three ? MembranePart::Tip
+      : sol.configuration == Configuration::SlipWithPartTwo && sol.max_i1_r < sol.r_top
+          ? MembranePart::Side
+          : MembranePart::Free;
   e.clamp_residual = std::abs(sol.residual);
   e.shooting_evaluations = sol.evaluations;
   if (options.record_fields && sol.ok()) e.fields = fields_of(p, sol);

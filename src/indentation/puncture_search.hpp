@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 
+#include "failure/criterion.hpp"
 #include "indentation/scaled_problem.hpp"
 #include "numerics/shooting.hpp"
 #include "puncture/loading_curve.hpp"
@@ -94,16 +95,17 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   PuncturePrediction out;
   const double scale = force_scale_n(p);
   const double big_a = p.geometry.clamp_radius_mm;
-  const double i1c = p.critical_i1;
+  const FailureCriterion criterion = failure_criterion(p);
   const StageBoundary& boundary = switch_point.boundary;
   if (boundary.status != Status::Converged) {
     out.message = boundary.message;
     return out;
   }
-  auto over_critical = [&](const ScaledSolution& s) { return max_first_invariant(s) - i1c; };
+  // The criterion's excess grows along the loading path; its first zero is the puncture.
+  auto over_critical = [&](const ScaledSolution& s) { return excess(criterion, s); };
   std::optional<double> f_puncture;
   Stage stage = Stage::Slip;
-  double slip_from_f = 0.0, slip_from_g = 3.0 - i1c;
+  double slip_from_f = 0.0, slip_from_g = unloaded_excess(criterion);
   if (boundary.first_stage == Stage::Stick) {
     const double f_switch = boundary.switches ? boundary.force_stuck_n / scale : kInf;
     bool punctures_stuck = !boundary.switches;
@@ -114,7 +116,8 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
     }
     if (punctures_stuck) {
       stage = Stage::Stick;
-      f_puncture = first_force_where(shooting, Stage::Stick, 0.0, 3.0 - i1c, over_critical);
+      f_puncture =
+          first_force_where(shooting, Stage::Stick, 0.0, unloaded_excess(criterion), over_critical);
     } else {
       const auto s = shooting.solve_at_depth(Stage::Slip, boundary.depth_mm / big_a);
       if (!s.ok()) {
@@ -123,7 +126,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
       }
       slip_from_f = s.f;
       slip_from_g = over_critical(s);
-      if (slip_from_g >= 0.0) {  // the jump to sliding already reaches the critical I1
+      if (slip_from_g >= 0.0) {  // the jump to sliding already fails the membrane
         f_puncture = s.f;
         at_switch = true;
       }
@@ -133,7 +136,9 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
     // Usually the crack starts at the corner once Part II exists, where a direct solve applies;
     // it holds if the loading path reaches that force in the slip stage.  max I1 grows with the
     // force along the path, so the first crossing is then this one.
-    const auto direct = shooting.contact().direct_puncture(shooting, i1c);
+    const auto i1c = critical_first_invariant(criterion);
+    const auto direct =
+        i1c ? shooting.contact().direct_puncture(shooting, *i1c) : std::optional<ScaledSolution>();
     if (direct && direct->f >= slip_from_f)
       f_puncture = direct->f;
     else
@@ -142,8 +147,9 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   }
   if (!f_puncture) {
     out.message = fmt::format(
-        "no puncture found: I1 does not reach the critical value {:g} before the solver fails",
-        i1c);
+        "no puncture found: {} does not reach the critical value {:g} before the solver fails",
+        measure_name(criterion),
+        critical_value(criterion));
     return out;
   }
   const auto sol = shooting.solve(stage, *f_puncture);
@@ -156,14 +162,17 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   // critical value would return that end: not a puncture.  At a true root the largest I1 is
   // the critical one to ~1e-8 relative (the corner solve's tolerance; the path search brackets
   // the force to a few ulps): 1e-6 relative leaves a margin.
-  if (const double reached = max_first_invariant(sol); !at_switch && reached < i1c * (1.0 - 1e-6)) {
+  const double critical = critical_value(criterion);
+  if (const double reached = measure(criterion, sol);
+      !at_switch && reached < critical * (1.0 - 1e-6)) {
     const auto beyond = shooting.solve(stage, *f_puncture * (1.0 + 1e-9));
     out.message = fmt::format(
-        "no puncture found: in the {} stage the largest I1 reaches only {:.8g} (critical {:g}) "
+        "no puncture found: in the {} stage the largest {} reaches only {:.8g} (critical {:g}) "
         "at {:.6g} N, where the solutions end{}",
         to_string(stage),
+        measure_name(criterion),
         reached,
-        i1c,
+        critical,
         *f_puncture * scale,
         beyond.ok() ? std::string() : ": " + beyond.message);
     return out;
