@@ -1,7 +1,9 @@
 #pragma once
 // The free membrane (Part I) from where it leaves the indenter to the clamp: integrated once for
 // a given start, with the clamp residual, the height climbed and the largest I1 along the way.
-// The contact model (indentation/contact/) supplies the start; the shooting varies it.
+// The contact model (indentation/contact/) supplies the start; the shooting varies it.  Part I is
+// the free membrane (mechanics/free_membrane_ode.hpp) under the indenter's force alone, its state
+// the stretches.
 #include <algorithm>
 #include <limits>
 #include <optional>
@@ -52,7 +54,7 @@ class FreePart {
     PartOneState x = start.state;
     const double r0 = start.r0;
     if (samples) samples->clear();
-    const PartOneSystem<Law> system{law_, f, max_i1_};
+    const FreeMembraneSystem<Law, Stretches> system{law_, TransverseLoad{f, 0.0}, max_i1_};
     IntegrationSettings integration = s_.integration;
     if (samples) integration.max_step = (1.0 - r0) / std::max(1, s_.field_points);
     double last_l2 = x[2];

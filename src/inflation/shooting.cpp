@@ -10,14 +10,19 @@
 #include <limits>
 #include <optional>
 
-#include "inflation/inflation_ode.hpp"
+#include "inflation/pole_start.hpp"
 #include "inflation/scaled_inflation.hpp"
+#include "mechanics/free_membrane_ode.hpp"
 #include "numerics/interior_maximum.hpp"
 #include "puncture/kinematics.hpp"
 
 namespace puncture::detail {
 
 namespace {
+
+// The inflated membrane is the free membrane under the pressure alone, its state the strains
+// with the volume and the energy (docs/model.md, §14).
+using Layout = StrainsAndIntegrals;
 
 template <class Law>
 class InflationShooter {
@@ -45,7 +50,7 @@ class InflationShooter {
       return result;
     }
     result.start = *start;
-    const InflationSystem<Law> system{law_, pressure, max_i1_};
+    const FreeMembraneSystem<Law, Layout> system{law_, TransverseLoad{0.0, pressure}, max_i1_};
     IntegrationSettings integration = integration_;
     if (out) {
       out->samples.clear();
@@ -56,8 +61,8 @@ class InflationShooter {
     result.ok = integrate_part(
         system, x, start->r_ref, 1.0, integration, [&](double r, const InflationOdeState& y) {
           if (out) {
-            i1_max.observe(r, y, first_invariant(1.0 + y[1], 1.0 + y[2]));
-            out->samples.push_back({r, y[0], 1.0 + y[1], 1.0 + y[2], y[3]});
+            i1_max.observe(r, y, first_invariant(Layout::lambda1(y), Layout::lambda2(y)));
+            out->samples.push_back({r, y[0], Layout::lambda1(y), Layout::lambda2(y), y[3]});
           }
           return true;
         });
@@ -77,7 +82,7 @@ class InflationShooter {
               return y;
             },
             [](double, const InflationOdeState& y) {
-              return first_invariant(1.0 + y[1], 1.0 + y[2]);
+              return first_invariant(Layout::lambda1(y), Layout::lambda2(y));
             });
       } catch (const IntegrationFailure&) {
       }
@@ -89,7 +94,7 @@ class InflationShooter {
       } else {
         out->max_i1 = found.value;
         out->max_i1_r_ref = found.r;
-        out->max_i1_radius = (1.0 + found.state[2]) * found.r;
+        out->max_i1_radius = Layout::lambda2(found.state) * found.r;
       }
     }
     return result;
@@ -164,8 +169,9 @@ class InflationShooter {
     sol.pole_height = x[3];
     sol.volume = x[4];
     sol.energy = x[5];
-    sol.clamp_l1 = 1.0 + x[1];
-    sol.clamp_slope = std::atan2(0.5 * pressure, x[0]);  // r = 1 at the clamp
+    sol.clamp_l1 = Layout::lambda1(x);
+    // phi = atan2(g, t), with g = P r^2 / 2 and r = 1 at the clamp.
+    sol.clamp_slope = std::atan2(TransverseLoad{0.0, pressure}.vertical(1.0), x[0]);
     // After the bracket has collapsed, what is left is the integration's noise: accepted up
     // to a hundred times the tolerance (as the indentation solver does).
     if (sol.residual <= 100.0 * o_.shooting_tol) {
