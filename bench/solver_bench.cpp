@@ -29,7 +29,9 @@ void BM_PartOneIntegration(benchmark::State& state) {
   options.record_fields = false;
   const Gent& law = std::get<Gent>(problem.material.law);
   const detail::IndentationShooting<detail::FlatPunchContact<Gent>> shooting(
-      law, detail::shooting_settings(options), detail::contact_settings(problem, std::get<FlatPunch>(problem.indenter)));
+      law,
+      detail::shooting_settings(options),
+      detail::contact_settings(problem, std::get<FlatPunch>(problem.indenter)));
   const auto sol = shooting.solve(Stage::Slip, 0.2);
   for (auto _ : state)
     benchmark::DoNotOptimize(shooting.assemble(sol.configuration, sol.f, sol.parameter, false));

@@ -62,11 +62,11 @@ struct Equilibrium {
   double corner_slope_rad = 0.0;                  // slope of Part I where it leaves the indenter
   double corner_tension_ratio = 1.0;              // s1 just outside the corner / s1 in Part III
   double max_first_invariant = 3.0;  // largest I1 in the membrane: where a crack starts
-  double max_first_invariant_reference_radius_mm = 0.0;  // where it is: reference radius R
-  double max_first_invariant_radius_mm = 0.0;            // ... and current radius r
+  double max_first_invariant_reference_radius_mm = 0.0;        // where it is: reference radius R
+  double max_first_invariant_radius_mm = 0.0;                  // ... and current radius r
   MembranePart max_first_invariant_part = MembranePart::Free;  // ... in this part
-  double clamp_residual = 0.0;                           // |lambda2(A) - 1| reached by the shooting
-  int shooting_evaluations = 0;                          // integrations of Part I used
+  double clamp_residual = 0.0;   // |lambda2(A) - 1| reached by the shooting
+  int shooting_evaluations = 0;  // integrations of Part I used
   MembraneFields fields;
 
   bool ok() const { return status == Status::Converged; }

@@ -64,8 +64,8 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
   const double a = radius_mm(p.indenter);
   require_positive(errors, "indenter.radius_mm", "indenter radius", a, "mm");
   require_positive(errors, "geometry.thickness_mm", "thickness", g.thickness_mm, "mm");
-  if (std::isfinite(a) && std::isfinite(g.clamp_radius_mm) && a > 0.0 &&
-      g.clamp_radius_mm > 0.0 && a >= g.clamp_radius_mm)
+  if (std::isfinite(a) && std::isfinite(g.clamp_radius_mm) && a > 0.0 && g.clamp_radius_mm > 0.0 &&
+      a >= g.clamp_radius_mm)
     errors.push_back(
         {"indenter.radius_mm",
          fmt::format("indenter radius must be smaller than the clamp radius ({} mm), got {} mm",

@@ -12,8 +12,8 @@
 namespace puncture::detail {
 
 // "<name> must be a finite number > 0 <unit>, got <value>" unless value is finite and > 0.
-void require_positive(std::vector<ValidationError>& errors, std::string parameter,
-                      const char* name, double value, const char* unit);
+void require_positive(std::vector<ValidationError>& errors, std::string parameter, const char* name,
+                      double value, const char* unit);
 
 // The shear modulus and the law's own parameter (Gent's J_lim, Mooney-Rivlin's alpha), under
 // "material.".

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 
 #include "puncture/failure.hpp"
 #include "puncture/loading_curve.hpp"
@@ -20,6 +21,11 @@ struct Case {
   StickRule stick;
   MembranePart expected_part;
 };
+
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << "a = " << c.indenter_radius_mm << " mm, mu' = " << c.friction << ", stick "
+      << to_string(c.stick);
+}
 
 class CriticalI1AtPuncture : public ::testing::TestWithParam<Case> {};
 

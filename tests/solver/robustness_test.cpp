@@ -106,11 +106,10 @@ TEST(RandomInputs, EveryResultIsFiniteOrExplained) {
     p.critical_i1 = std::min(95.2, 3.0 + 0.8 * j_lim);
     const double f = uniform(gen, 0.01, 2.0), depth = uniform(gen, 1.0, 60.0);
     ASSERT_TRUE(validation_errors(p).empty()) << validation_errors(p).front().message;
-    const std::string what = "sample " + std::to_string(sample) +
-                             ": a = " + std::to_string(radius_mm(p.indenter)) +
-                             " mm, mu' = " + std::to_string(p.friction) +
-                             ", J_lim = " + std::to_string(j_lim) +
-                             ", G = " + std::to_string(p.material.shear_modulus_mpa);
+    const std::string what =
+        "sample " + std::to_string(sample) + ": a = " + std::to_string(radius_mm(p.indenter)) +
+        " mm, mu' = " + std::to_string(p.friction) + ", J_lim = " + std::to_string(j_lim) +
+        ", G = " + std::to_string(p.material.shear_modulus_mpa);
     for (Stage stage : {Stage::Stick, Stage::Slip}) {
       const auto at_force = solve_at_force(p, force_at(p, f), stage);
       expect_sound(at_force, what + ", f = " + std::to_string(f) + ", " + to_string(stage));
