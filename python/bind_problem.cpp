@@ -223,8 +223,8 @@ void bind_problem(py::module_& m) {
           },
           "alpha for a Mooney-Rivlin law, else None")
       .def_property_readonly(
-          "max_first_invariant",
-          [](const Material& mat) { return max_first_invariant(mat.law); },
+          "locking_first_invariant",
+          [](const Material& mat) { return locking_first_invariant(mat.law); },
           "I1 at which the law locks: 3 + J_lim for Gent, inf otherwise")
       .def_property_readonly(
           "description", [](const Material& mat) { return describe(mat); }, "in words")

@@ -70,7 +70,7 @@ json inputs_json(const Problem& p) {
 
 // The stretch at which uniaxial tension locks the law (I1 = max I1), or `cap` if it never does.
 double uniaxial_locking_stretch(const MaterialLaw& law, double cap) {
-  const double i1_max = max_first_invariant(law);
+  const double i1_max = locking_first_invariant(law);
   auto i1 = [](double l) { return l * l + 2.0 / l; };
   if (!std::isfinite(i1_max) || i1(cap) < i1_max) return cap;
   double lo = 1.0, hi = cap;

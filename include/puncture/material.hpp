@@ -1,7 +1,7 @@
 #pragma once
 // The membrane's material: a shear modulus and a strain-energy law chosen at run time.
-// Adding a law: write a struct like materials/gent.hpp (name(), max_i1(), derivatives()) and add
-// it to MaterialLaw below.
+// Adding a law: write a struct like materials/gent.hpp (name(), locking_i1(), derivatives()) and
+// add it to MaterialLaw below.
 #include <optional>
 #include <string>
 #include <variant>
@@ -23,7 +23,8 @@ struct Material {
 std::string law_name(const MaterialLaw& law);
 // One-line description with parameters, e.g. "gent (J_lim = 125)".
 std::string describe(const Material& material);
-double max_first_invariant(const MaterialLaw& law);  // 3 + J_lim for Gent, infinity otherwise
+// The I1 at which the law locks: 3 + J_lim for Gent, infinity for laws that do not lock.
+double locking_first_invariant(const MaterialLaw& law);
 
 MembraneStress membrane_stress(const MaterialLaw& law, double l1, double l2);
 

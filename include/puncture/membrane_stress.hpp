@@ -74,7 +74,7 @@ MembraneStress membrane_stress(const Law& law, double l1, double l2) {
 // does): the larger root of lambda1^2 + l2^2 + 1/(lambda1^2 l2^2) = max_i1.
 template <class Law>
 double locking_radial_stretch(const Law& law, double l2) {
-  const double i1_max = law.max_i1();
+  const double i1_max = law.locking_i1();
   if (!std::isfinite(i1_max)) return i1_max;
   const double b = l2 * l2 - i1_max;  // x^2 + b x + 1/l2^2 = 0 with x = lambda1^2
   const double disc = b * b - 4.0 / (l2 * l2);

@@ -206,7 +206,7 @@ def test_problem_editing_and_copies():
     assert repr(pu.Problem()).startswith("Problem(geometry=Geometry(clamp_radius_mm=25")
     assert pu.StickCriterion("edge-tension:0.02").rule == pu.StickRule.EdgeTension
     assert pu.Problem(stick="always").stick.rule == pu.StickRule.Always
-    assert pu.Problem(material=pu.Material(law=pu.NeoHookean())).material.max_first_invariant \
+    assert pu.Problem(material=pu.Material(law=pu.NeoHookean())).material.locking_first_invariant \
         == math.inf
 
 
@@ -218,7 +218,7 @@ def test_material_stresses():
     np.testing.assert_allclose(neo.equibiaxial_stress_mpa(stretch),
                                0.06 * (stretch - stretch**-5), rtol=1e-12)
     gent = pu.Material.gent()
-    assert gent.max_first_invariant == 128.0
+    assert gent.locking_first_invariant == 128.0
     # Gent stiffens: above neo-Hookean, equal at small strain
     assert np.all(gent.uniaxial_stress_mpa(stretch[1:]) > neo.uniaxial_stress_mpa(stretch[1:]))
     assert gent.uniaxial_stress_mpa(1.001) == pytest.approx(neo.uniaxial_stress_mpa(1.001),

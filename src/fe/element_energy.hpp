@@ -102,7 +102,7 @@ inline Dual strain_energy(const MaterialLaw& law, const Dual& l1, const Dual& l2
   const double a = l1.value().value(), b = l2.value().value();
   const double i1 = first_invariant(a, b), i2 = second_invariant(a, b);
   const double w = std::visit([&](const auto& m) { return m.derivatives(i1, i2).w; }, law);
-  locked = !std::isfinite(w) || i1 >= max_first_invariant(law);
+  locked = !std::isfinite(w) || i1 >= locking_first_invariant(law);
   const MembraneStress s = membrane_stress(law, a, b);
   const Vector& da = l1.value().derivatives();
   const Vector& db = l2.value().derivatives();
@@ -145,7 +145,7 @@ inline double element_energy_value(const MaterialLaw& law, const ElementPlace& p
     if (!stretches_at(place, values, eta, l1, l2, radius, weight))
       return std::numeric_limits<double>::infinity();
     const double i1 = first_invariant(l1, l2);
-    if (i1 >= max_first_invariant(law)) return std::numeric_limits<double>::infinity();
+    if (i1 >= locking_first_invariant(law)) return std::numeric_limits<double>::infinity();
     const double i2 = second_invariant(l1, l2);
     const double w = std::visit([&](const auto& m) { return m.derivatives(i1, i2).w; }, law);
     if (!std::isfinite(w)) return std::numeric_limits<double>::infinity();

@@ -418,7 +418,7 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
       } else if (++halvings > options.max_step_halvings) {
         failure = fmt::format(
             "no equilibrium found beyond depth {:.6g} mm: {}", depth * A, result.message);
-        const double lock = max_first_invariant(problem.material.law);
+        const double lock = locking_first_invariant(problem.material.law);
         if (previous && std::isfinite(lock))
           failure += fmt::format(" (largest I1 there {:.4g}; the material locks at {:.4g})",
                                  previous->max_first_invariant,

@@ -122,7 +122,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     pt.part_three_stretch = sol->part_three_stretch;
     pt.part_two_length_mm = sol->part_two_length * big_a;
     pt.corner_slope_rad = sol->corner_slope;
-    pt.max_first_invariant = max_first_invariant(*sol);
+    pt.max_first_invariant = max_first_invariant_of(*sol);
     out.points.push_back(pt);
     return true;
   };

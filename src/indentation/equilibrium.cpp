@@ -165,7 +165,7 @@ Equilibrium to_physical(const Problem& p, const ScaledSolution& sol, Stage stage
   e.part_two_length_mm = sol.part_two_length * big_a;
   e.corner_slope_rad = sol.corner_slope;
   e.corner_tension_ratio = sol.tension_ratio;
-  e.max_first_invariant = max_first_invariant(sol);
+  e.max_first_invariant = max_first_invariant_of(sol);
   // Where I1 is largest; a tie with Part III (mu = 0) is reported at the corner's Part I/II side.
   const bool in_part_three = sol.max_i1 < e.max_first_invariant;
   e.max_first_invariant_reference_radius_mm = (in_part_three ? sol.r_corner : sol.max_i1_r) * big_a;

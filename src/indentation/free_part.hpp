@@ -42,11 +42,11 @@ template <class Law>
 class FreePart {
  public:
   FreePart(const Law& law, const ShootingSettings& settings)
-      : law_(law), s_(settings), max_i1_(law.max_i1()) {}
+      : law_(law), s_(settings), locking_i1_(law.locking_i1()) {}
 
   const Law& law() const { return law_; }
   const ShootingSettings& settings() const { return s_; }
-  double max_i1() const { return max_i1_; }
+  double locking_i1() const { return locking_i1_; }
 
   // Part I at force f from `start` to the clamp; with `samples`, the solution is sampled.
   FreePartRun run(double f, const FreeStart& start, std::vector<PartOneSample>* samples) const {
@@ -54,7 +54,7 @@ class FreePart {
     PartOneState x = start.state;
     const double r0 = start.r0;
     if (samples) samples->clear();
-    const FreeMembraneSystem<Law, Stretches> system{law_, TransverseLoad{f, 0.0}, max_i1_};
+    const FreeMembraneSystem<Law, Stretches> system{law_, TransverseLoad{f, 0.0}, locking_i1_};
     IntegrationSettings integration = s_.integration;
     if (samples) integration.max_step = (1.0 - r0) / std::max(1, s_.field_points);
     double last_l2 = x[2];
@@ -105,7 +105,7 @@ class FreePart {
  private:
   const Law& law_;
   ShootingSettings s_;
-  double max_i1_;
+  double locking_i1_;
 };
 
 }  // namespace puncture::detail

@@ -38,7 +38,7 @@ void append_material_errors(std::vector<ValidationError>& errors, const Material
 
 void append_critical_i1_errors(std::vector<ValidationError>& errors, double critical_i1,
                                const MaterialLaw& law) {
-  const double i1_max = max_first_invariant(law);
+  const double i1_max = locking_first_invariant(law);
   if (!std::isfinite(critical_i1) || critical_i1 <= 3.0)
     errors.push_back({"critical_i1",
                       fmt::format("critical I1 must be a finite number > 3, got {}", critical_i1)});

@@ -20,9 +20,6 @@ ScaledSolution solve_scaled(const Problem& problem, double f, Stage stage,
 ScaledSolution solve_scaled_at_depth(const Problem& problem, double d, Stage stage,
                                      const SolverOptions& options, double f_guess = 0.0);
 
-// Largest I1 anywhere in the membrane, Part III included.
-inline double max_first_invariant(const ScaledSolution& sol) { return max_first_invariant_of(sol); }
-
 // The puncture solved directly by the contact model, when it knows one (the flat punch: the
 // crack at the corner with Part II; FlatPunchContact::direct_puncture).
 std::optional<ScaledSolution> direct_puncture(const Problem& problem, const SolverOptions& options);

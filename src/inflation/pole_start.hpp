@@ -31,9 +31,9 @@ struct PoleStart {
 };
 
 template <class Law>
-std::optional<PoleStart> pole_start(const Law& law, double l0, double pressure, double max_i1) {
+std::optional<PoleStart> pole_start(const Law& law, double l0, double pressure, double locking_i1) {
   const auto st = membrane_stress(law, l0, l0);
-  if (!(st.i1 < max_i1) || !(st.s1 > 0.0) || !(st.ds1_dl1 > 0.0)) return std::nullopt;
+  if (!(st.i1 < locking_i1) || !(st.s1 > 0.0) || !(st.ds1_dl1 > 0.0)) return std::nullopt;
   const double s0 = st.s1, a1 = st.ds1_dl1, a2 = st.ds1_dl2;
   const double c = pressure * l0 * l0 / (2.0 * s0);
   const double a = c * c * ((3.0 * a2 - a1) * l0 - 3.0 * s0) / (16.0 * a1);
@@ -41,7 +41,7 @@ std::optional<PoleStart> pole_start(const Law& law, double l0, double pressure, 
   const double eps = 1e-3 / std::max(1.0, c);
   const double l1 = l0 + a * eps * eps, l2 = l0 + b * eps * eps;
   const auto se = membrane_stress(law, l1, l2);
-  if (!(se.i1 < max_i1)) return std::nullopt;
+  if (!(se.i1 < locking_i1)) return std::nullopt;
   const double s_total = eps * se.s1;
   const double g = TransverseLoad{0.0, pressure}.vertical(l2 * eps);  // P r^2 / 2
   if (!(s_total > g)) return std::nullopt;

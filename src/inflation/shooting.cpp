@@ -31,7 +31,7 @@ class InflationShooter {
       : law_(law),
         o_(options),
         integration_{options.integration_rel_tol, options.integration_abs_tol, options.max_steps},
-        max_i1_(law.max_i1()) {}
+        locking_i1_(law.locking_i1()) {}
 
   struct Run {
     bool ok = false;
@@ -44,13 +44,13 @@ class InflationShooter {
   // and the largest I1 into it.
   Run run(double l0, double pressure, ScaledInflation* out) const {
     Run result;
-    const auto start = pole_start(law_, l0, pressure, max_i1_);
+    const auto start = pole_start(law_, l0, pressure, locking_i1_);
     if (!start) {
       result.why = "the pole's start failed";
       return result;
     }
     result.start = *start;
-    const FreeMembraneSystem<Law, Layout> system{law_, TransverseLoad{0.0, pressure}, max_i1_};
+    const FreeMembraneSystem<Law, Layout> system{law_, TransverseLoad{0.0, pressure}, locking_i1_};
     IntegrationSettings integration = integration_;
     if (out) {
       out->samples.clear();
@@ -194,13 +194,13 @@ class InflationShooter {
   const Law& law_;
   SolverOptions o_;
   IntegrationSettings integration_;
-  double max_i1_;
+  double locking_i1_;
 };
 
 }  // namespace
 
 double locking_pole_stretch(const MaterialLaw& law) {
-  const double i1_max = max_first_invariant(law);
+  const double i1_max = locking_first_invariant(law);
   if (!std::isfinite(i1_max)) return i1_max;
   return equibiaxial_stretch_for_first_invariant(i1_max);
 }
@@ -217,14 +217,14 @@ ScaledInflation solve_inflation(const MaterialLaw& law, double l0, const SolverO
             {static_cast<double>(k) / std::max(1, options.field_points), 0.0, 1.0, 1.0, 0.0});
     return sol;
   }
-  if (!(first_invariant(l0, l0) < max_first_invariant(law))) {
+  if (!(first_invariant(l0, l0) < locking_first_invariant(law))) {
     sol.status = Status::BeyondLocking;
     sol.message = fmt::format(
         "pole stretch {:g} is at or beyond the Gent locking limit (pole stretch {:.6g}, I1 = 3 "
         "+ J_lim = {:g})",
         l0,
         locking_pole_stretch(law),
-        max_first_invariant(law));
+        locking_first_invariant(law));
     return sol;
   }
   SolverOptions o = options;

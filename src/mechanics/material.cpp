@@ -24,8 +24,8 @@ std::string describe(const Material& material) {
       "{}{}, G = {:g} MPa", law_name(material.law), params, material.shear_modulus_mpa);
 }
 
-double max_first_invariant(const MaterialLaw& law) {
-  return std::visit([](const auto& l) { return l.max_i1(); }, law);
+double locking_first_invariant(const MaterialLaw& law) {
+  return std::visit([](const auto& l) { return l.locking_i1(); }, law);
 }
 
 MembraneStress membrane_stress(const MaterialLaw& law, double l1, double l2) {

@@ -119,8 +119,8 @@ TEST(FreeMembraneOdeSolver, PointForceAloneIsPartOneBitForBit) {
           for (int k = 0; k < 4000; ++k) {
             const double f = f_of(rng), r_ref = r_of(rng);
             const Stretches::State x{t_of(rng), l_of(rng), l_of(rng), 0.1};
-            const ForceOnlyReference<Law> before{l, f, l.max_i1()};
-            const FreeMembraneSystem<Law, Stretches> now{l, TransverseLoad{f, 0.0}, l.max_i1()};
+            const ForceOnlyReference<Law> before{l, f, l.locking_i1()};
+            const FreeMembraneSystem<Law, Stretches> now{l, TransverseLoad{f, 0.0}, l.locking_i1()};
             inside +=
                 expect_same_bits(before, now, x, r_ref, name_of(law) + " #" + std::to_string(k));
           }
@@ -144,9 +144,9 @@ TEST(FreeMembraneOdeSolver, PressureAloneIsTheInflationBitForBit) {
             const double scale = k % 2 == 0 ? 1.0 : 1e-5;
             const StrainsAndIntegrals::State x{
                 t_of(rng), scale * e_of(rng), scale * e_of(rng), 0.1, 0.2, 0.3};
-            const PressureOnlyReference<Law> before{l, pressure, l.max_i1()};
+            const PressureOnlyReference<Law> before{l, pressure, l.locking_i1()};
             const FreeMembraneSystem<Law, StrainsAndIntegrals> now{
-                l, TransverseLoad{0.0, pressure}, l.max_i1()};
+                l, TransverseLoad{0.0, pressure}, l.locking_i1()};
             inside +=
                 expect_same_bits(before, now, x, r_ref, name_of(law) + " #" + std::to_string(k));
           }
@@ -169,8 +169,8 @@ TEST(FreeMembraneOdeSolver, LayoutsAgreeUnderCombinedLoad) {
     const StrainsAndIntegrals::State xe{t, l1 - 1.0, l2 - 1.0, 0.0, 0.0, 0.0};
     Stretches::State ds{};
     StrainsAndIntegrals::State de{};
-    FreeMembraneSystem<Gent, Stretches>{law, load, law.max_i1()}(xs, ds, r_ref);
-    FreeMembraneSystem<Gent, StrainsAndIntegrals>{law, load, law.max_i1()}(xe, de, r_ref);
+    FreeMembraneSystem<Gent, Stretches>{law, load, law.locking_i1()}(xs, ds, r_ref);
+    FreeMembraneSystem<Gent, StrainsAndIntegrals>{law, load, law.locking_i1()}(xe, de, r_ref);
     for (int j = 0; j < 4; ++j) {
       const double scale = std::abs(ds[0]) + std::abs(ds[1]) + std::abs(ds[2]) + std::abs(ds[3]);
       EXPECT_NEAR(ds[j], de[j], 1e-12 * scale) << "#" << k << ", component " << j;
@@ -235,8 +235,8 @@ TEST(FreeMembraneOdeSolver, CombinedLoadKeepsTheVerticalBalance) {
             const TransverseLoad load{c.f, c.pressure};
             const std::string where = name_of(law) + " at f = " + std::to_string(c.f) +
                                       ", P = " + std::to_string(c.pressure);
-            const FreeMembraneSystem<Law, Stretches> stretches{l, load, l.max_i1()};
-            const FreeMembraneSystem<Law, StrainsAndIntegrals> strains{l, load, l.max_i1()};
+            const FreeMembraneSystem<Law, Stretches> stretches{l, load, l.locking_i1()};
+            const FreeMembraneSystem<Law, StrainsAndIntegrals> strains{l, load, l.locking_i1()};
             EXPECT_LT(worst_vertical_imbalance<Stretches>(stretches, law, 1.5, 1.3, 0.2), 1e-10)
                 << where;
             EXPECT_LT(worst_vertical_imbalance<StrainsAndIntegrals>(strains, law, 1.5, 1.3, 0.2),

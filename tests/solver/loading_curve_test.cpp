@@ -328,13 +328,13 @@ TEST_P(PunctureRoutes, DirectCornerSolveAgreesWithPathSearch) {
   ASSERT_TRUE(direct.has_value()) << "the crack is expected at the corner";
   ASSERT_TRUE(direct->ok()) << direct->message;
   EXPECT_EQ(direct->configuration, Configuration::SlipWithPartTwo);
-  EXPECT_NEAR(detail::max_first_invariant(*direct), p.critical_i1, 1e-7 * p.critical_i1);
+  EXPECT_NEAR(detail::max_first_invariant_of(*direct), p.critical_i1, 1e-7 * p.critical_i1);
 
   auto excess = [&](double f) {
     const auto s = detail::solve_scaled(p, f, Stage::Slip, o);
     // Past locking the state does not exist: that is beyond the puncture.
     if (!s.ok()) return s.status == Status::BeyondLocking ? 1.0 : std::nan("");
-    return detail::max_first_invariant(s) - p.critical_i1;
+    return detail::max_first_invariant_of(s) - p.critical_i1;
   };
   // Scan up the loading path (force grows with depth in the slip stage) for the first crossing.
   double f_lo = 0.0, f_hi = 0.0, g_lo = 3.0 - p.critical_i1, g_hi = g_lo;

@@ -39,7 +39,7 @@ class BondedDiscContact {
   std::optional<FreeStart> free_start(Configuration, double f, double l1) const {
     if (!(l1 > 0.0) || !std::isfinite(l1)) return std::nullopt;
     const auto st = membrane_stress(part_one_.law(), l1, 1.0);
-    if (!(st.i1 < part_one_.max_i1())) return std::nullopt;
+    if (!(st.i1 < part_one_.locking_i1())) return std::nullopt;
     const double rs1 = a_ * st.s1;  // R s1 = sqrt(t^2 + f^2): the vertical balance fixes t
     if (!(rs1 >= f * (1.0 - 1e-8))) return std::nullopt;
     const double t = std::sqrt(std::max(0.0, (rs1 - f) * (rs1 + f)));

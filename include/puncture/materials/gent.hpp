@@ -15,7 +15,7 @@ struct Gent {
 
   static constexpr bool depends_on_i2 = false;
   static constexpr std::string_view name() { return "gent"; }
-  double max_i1() const { return 3.0 + j_lim; }
+  double locking_i1() const { return 3.0 + j_lim; }
 
   // Energy per unit reference volume divided by the shear modulus, and its I1, I2 derivatives.
   InvariantDerivatives derivatives(double i1, double /*i2*/) const {

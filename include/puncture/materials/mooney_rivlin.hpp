@@ -13,7 +13,7 @@ struct MooneyRivlin {
   double alpha = 0.1;  // share of the shear modulus carried by the I2 term, C2 / (C1 + C2)
 
   static constexpr std::string_view name() { return "mooney-rivlin"; }
-  static constexpr double max_i1() { return std::numeric_limits<double>::infinity(); }
+  static constexpr double locking_i1() { return std::numeric_limits<double>::infinity(); }
 
   InvariantDerivatives derivatives(double i1, double i2) const {
     return {0.5 * (1.0 - alpha) * (i1 - 3.0) + 0.5 * alpha * (i2 - 3.0),

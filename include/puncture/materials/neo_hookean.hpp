@@ -10,7 +10,7 @@ namespace puncture {
 struct NeoHookean {
   static constexpr bool depends_on_i2 = false;
   static constexpr std::string_view name() { return "neo-hookean"; }
-  static constexpr double max_i1() { return std::numeric_limits<double>::infinity(); }
+  static constexpr double locking_i1() { return std::numeric_limits<double>::infinity(); }
 
   InvariantDerivatives derivatives(double i1, double /*i2*/) const {
     return {0.5 * (i1 - 3.0), 0.5, 0.0, 0.0, 0.0, 0.0};

@@ -61,7 +61,10 @@ class FlatPunchContact {
   using Settings = FlatPunchSettings;
 
   FlatPunchContact(const FreePart<Law>& part_one, const FlatPunchSettings& settings)
-      : part_one_(part_one), law_(part_one.law()), s_(settings), max_i1_(part_one.max_i1()) {}
+      : part_one_(part_one),
+        law_(part_one.law()),
+        s_(settings),
+        locking_i1_(part_one.locking_i1()) {}
 
   // Every configuration's parameter exceeds this floor: 1 for the stretches at the edge and of
   // Part III, a / A for the hoop stretch a / R at the top of Part II (R < A).
@@ -77,7 +80,8 @@ class FlatPunchContact {
         const double rs1 = s_.a * membrane_stress(law_, p, 1.0).s1;
         // rs1 < f by round-off only at the vertical exit, where t = 0 (near lambda1 = 1 the
         // inversion loses digits to cancellation, hence the loose bound).
-        if (!(rs1 >= f * (1.0 - 1e-8)) || first_invariant(p, 1.0) >= max_i1_) return std::nullopt;
+        if (!(rs1 >= f * (1.0 - 1e-8)) || first_invariant(p, 1.0) >= locking_i1_)
+          return std::nullopt;
         const double t = std::sqrt(std::max(0.0, (rs1 - f) * (rs1 + f)));
         return FreeStart{
             {t, p, 1.0, 0.0}, s_.a, std::atan2(f, t), std::numeric_limits<double>::infinity()};
@@ -87,7 +91,7 @@ class FlatPunchContact {
         // vertical balance give the exit slope.
         const double r0 = s_.a / p;
         const double s_eq = membrane_stress(law_, p, p).s1;
-        if (!(s_eq > 0.0) || !std::isfinite(s_eq) || first_invariant(p, p) >= max_i1_)
+        if (!(s_eq > 0.0) || !std::isfinite(s_eq) || first_invariant(p, p) >= locking_i1_)
           return std::nullopt;
         const double kappa = f / (r0 * s_eq);
         // Beyond exp(mu pi/2) the exit would have to be steeper than vertical: Part II exists.
@@ -131,12 +135,12 @@ class FlatPunchContact {
     // the gap counts as negative there.
     auto corner_gap = [&](double r, const PartTwoState& y) {
       const double l2 = s_.a / r;
-      if (!(first_invariant(l2, l2) < max_i1_)) return -1.0;
+      if (!(first_invariant(l2, l2) < locking_i1_)) return -1.0;
       const double gap =
           membrane_stress(law_, y[0], l2).s1 - capstan * membrane_stress(law_, l2, l2).s1;
       return std::isfinite(gap) ? gap : -1.0;
     };
-    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, max_i1_};
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
     PartTwoState y{st.state[1], 0.0};
     double r_prev = st.r0, r_hit = -1.0;
     PartTwoState y_prev = y;
@@ -163,7 +167,7 @@ class FlatPunchContact {
                        });
     if (!ok || r_hit < 0.0) {
       sol.status = Status::BeyondLocking;
-      sol.message = std::isfinite(max_i1_)
+      sol.message = std::isfinite(locking_i1_)
                         ? "Part II reaches the locking stretch before meeting the capstan condition"
                         : "Part II never meets the capstan condition: the force is beyond the "
                           "membrane's limit load";
@@ -286,7 +290,7 @@ class FlatPunchContact {
     const double target = f * std::exp(-s_.mu * kHalfPi) / s_.a;
     auto g = [&](double l) -> std::optional<double> {
       const double s = membrane_stress(law_, l, l).s1;
-      if (!std::isfinite(s) || first_invariant(l, l) >= max_i1_) return std::nullopt;
+      if (!std::isfinite(s) || first_invariant(l, l) >= locking_i1_) return std::nullopt;
       return s / l - target;
     };
     // g is undefined past the equibiaxial locking stretch; shoot_increasing treats that as beyond.
@@ -354,7 +358,7 @@ class FlatPunchContact {
     // Corner state: s1(lambda1, L) = capstan s_eq(L) and I1(lambda1, L) = i1c, increasing in L.
     auto corner_l1 = [&](double l) -> std::optional<double> {
       const double s_eq = membrane_stress(law_, l, l).s1;
-      if (!std::isfinite(s_eq) || first_invariant(l, l) >= max_i1_) return std::nullopt;
+      if (!std::isfinite(s_eq) || first_invariant(l, l) >= locking_i1_) return std::nullopt;
       return invert_radial_stress(law_, capstan * s_eq, l, l);
     };
     auto excess = [&](double l) -> std::optional<double> {
@@ -369,7 +373,7 @@ class FlatPunchContact {
     if (!l1_corner) return std::nullopt;
     const double r_corner = s_.a / *l3;
     const double q_corner = r_corner * membrane_stress(law_, *l1_corner, *l3).s1;  // R s1 there
-    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, max_i1_};
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
     // Top of Part II for force f: march up from the corner until R s1 = f (Eq. 12 with phi = pi/2).
     auto top_stretch = [&](double f) -> std::optional<double> {
       PartTwoState y{*l1_corner, 0.0};
@@ -529,7 +533,7 @@ class FlatPunchContact {
       const double g_low = counted(Configuration::SlipWithPartTwo, lowest).value_or(kBeyondDomain);
       if (g_low >= 0.0) {
         plan.status = Status::BeyondLocking;
-        plan.message = std::isfinite(max_i1_)
+        plan.message = std::isfinite(locking_i1_)
                            ? "the force is beyond what the membrane can carry before the "
                              "material locks"
                            : "the force is beyond the membrane's limit load (this law's stress "
@@ -550,7 +554,7 @@ class FlatPunchContact {
   const FreePart<Law>& part_one_;
   const Law& law_;
   FlatPunchSettings s_;
-  double max_i1_;
+  double locking_i1_;
 };
 
 }  // namespace puncture::detail
