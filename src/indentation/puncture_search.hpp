@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "failure/criterion.hpp"
+#include "indentation/physical_state.hpp"
 #include "indentation/scaled_problem.hpp"
 #include "numerics/shooting.hpp"
 #include "puncture/loading_curve.hpp"
@@ -179,7 +180,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   }
 
   out.found = true;
-  out.state = to_physical(p, sol, stage, options);
+  out.state = to_physical(p, shooting.contact(), sol, stage, options);
   out.force_n = out.state.force_n;
   out.normalized_force = sol.f;
   out.depth_mm = out.state.depth_mm;

@@ -8,10 +8,6 @@
 
 namespace puncture::detail {
 
-// Physical Equilibrium (with fields when options.record_fields) from a normalised solution.
-Equilibrium to_physical(const Problem& problem, const ScaledSolution& sol, Stage stage,
-                        const SolverOptions& options);
-
 // Solve at normalised force f in the given stage.
 ScaledSolution solve_scaled(const Problem& problem, double f, Stage stage,
                             const SolverOptions& options);

@@ -90,6 +90,31 @@ class BondedDiscContact {
   }
   std::string crack_location(const ScaledSolution&) const { return "Part I"; }
 
+  // I1 is largest in the free membrane (the disc's face is unstretched).
+  LargestFirstInvariant largest_first_invariant(const ScaledSolution& sol) const {
+    return {MembranePart::Free, sol.max_i1_r, sol.max_i1_radius};
+  }
+  const Law& law() const { return part_one_.law(); }
+  double free_part_inner_height(const ScaledSolution&) const { return 0.0; }
+  // The bonded face: unstretched, at the tip's depth, from the centre to the edge.
+  void append_contact_fields(const ScaledSolution& sol, const FieldScales& u,
+                             MembraneFields& m) const {
+    for (const double r : {0.0, a_}) {
+      append_point(m,
+                   MembranePart::Tip,
+                   r * u.clamp_radius_mm,
+                   r * u.clamp_radius_mm,
+                   sol.depth * u.clamp_radius_mm,
+                   0.0,
+                   1.0,
+                   1.0,
+                   membrane_stress(part_one_.law(), 1.0, 1.0),
+                   u.shear_modulus_mpa,
+                   0.0,
+                   0.0);
+    }
+  }
+
  private:
   static constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   const FreePart<Law>& part_one_;
@@ -131,6 +156,12 @@ TEST(PluggableContact, BondedDiscGivesTheAlwaysHeldFlatPunch) {
     EXPECT_NEAR(d.force_n, p.force_n, 1e-7 * p.force_n) << i;
     EXPECT_NEAR(d.max_first_invariant, p.max_first_invariant, 1e-7 * p.max_first_invariant) << i;
   }
+  // The state at puncture made physical through the disc's own contact fields: its Part I is
+  // the held flat punch's.
+  EXPECT_EQ(disc.puncture.state.max_first_invariant_part, MembranePart::Free);
+  EXPECT_NEAR(disc.puncture.state.max_first_invariant_reference_radius_mm,
+              punch.puncture.state.max_first_invariant_reference_radius_mm,
+              1e-6 * disc_problem.geometry.clamp_radius_mm);
   // The driver worked with the disc's own configuration rule: no change on the sliding branch.
   EXPECT_FALSE(disc.part_two_onset_depth_mm.has_value());
 }

@@ -28,6 +28,13 @@
 //                                            a puncture solved directly, when the contact knows
 //                                            one (else the loading path is searched)
 //   std::string crack_location(const ScaledSolution&)   where the largest I1 is, in words
+//   LargestFirstInvariant largest_first_invariant(const ScaledSolution&)
+//                                            where the largest I1 is: part and radii
+//   const Law& law()
+//   void append_contact_fields(const ScaledSolution&, const FieldScales&, MembraneFields&)
+//                                            the fields of the parts in contact, centre outwards
+//   double free_part_inner_height(const ScaledSolution&)
+//                                            how far Part I's inner end lies above the tip
 //
 // Adding an indenter: a contact model with these members, an alternative in the dispatch
 // (indentation/dispatch.hpp); the shooting and the loading-curve driver are unchanged.
@@ -37,6 +44,13 @@
 #include "puncture/equilibrium.hpp"
 
 namespace puncture::detail {
+
+// Where the largest I1 of a state is (normalised radii).
+struct LargestFirstInvariant {
+  MembranePart part = MembranePart::Free;
+  double reference_radius = 0.0;  // R / A
+  double radius = 0.0;            // r / A
+};
 
 // How the shooting at one force proceeds: the configuration and a bracket start (lo, g_lo < 0)
 // with an upper cap of the parameter, or why there is no shooting (status and message).

@@ -24,6 +24,7 @@
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
 #include "indentation/free_part.hpp"
+#include "indentation/membrane_fields.hpp"
 #include "mechanics/inverse_stretch.hpp"
 #include "numerics/interior_maximum.hpp"
 #include "numerics/shooting.hpp"
@@ -450,6 +451,69 @@ class FlatPunchContact {
         std::abs(max_first_invariant_of(sol) - i1c) > 1e-7 * i1c)
       return std::nullopt;
     return sol;
+  }
+
+  const Law& law() const { return law_; }
+
+  // The largest I1 is Part III's when it exceeds Parts I and II (a tie, without friction, is
+  // reported at the corner's Part I/II side); Part II spans the side from the corner to its top.
+  LargestFirstInvariant largest_first_invariant(const ScaledSolution& sol) const {
+    const bool in_part_three = sol.max_i1 < max_first_invariant_of(sol);
+    const MembranePart part =
+        in_part_three ? MembranePart::Tip
+        : sol.configuration == Configuration::SlipWithPartTwo && sol.max_i1_r < sol.r_top
+            ? MembranePart::Side
+            : MembranePart::Free;
+    return {part,
+            in_part_three ? sol.r_corner : sol.max_i1_r,
+            in_part_three ? sol.r_corner * sol.part_three_stretch : sol.max_i1_radius};
+  }
+
+  // Part I starts at the top of Part II.
+  double free_part_inner_height(const ScaledSolution& sol) const { return sol.part_two_length; }
+
+  // Part III (homogeneous under the flat tip, unstretched when held), then Part II from the
+  // corner up the side (its samples were taken downward).
+  void append_contact_fields(const ScaledSolution& sol, const FieldScales& u,
+                             MembraneFields& m) const {
+    const double big_a = u.clamp_radius_mm, g = u.shear_modulus_mpa;
+    const double depth = sol.depth * big_a;
+    const double l3 = sol.part_three_stretch;
+    constexpr int kPartThreePoints = 5;
+    for (int i = 0; i < kPartThreePoints; ++i) {
+      const double r_ref = sol.r_corner * i / (kPartThreePoints - 1);
+      append_point(m,
+                   MembranePart::Tip,
+                   r_ref * big_a,
+                   l3 * r_ref * big_a,
+                   depth,
+                   0.0,
+                   l3,
+                   l3,
+                   membrane_stress(law_, l3, l3),
+                   g,
+                   0.0,
+                   0.0);
+    }
+    const double radius_mm = s_.a * big_a;
+    for (auto it = sol.part_two.rbegin(); it != sol.part_two.rend(); ++it) {
+      const double r_ref = (*it)[0], l1 = (*it)[1], l2 = s_.a / r_ref;
+      const auto st = membrane_stress(law_, l1, l2);
+      const double pressure = st.s2 * g * u.thickness_mm / (l1 * radius_mm);  // Eq. (16)
+      const double z = depth - (sol.part_two_length - (*it)[2]) * big_a;
+      append_point(m,
+                   MembranePart::Side,
+                   r_ref * big_a,
+                   radius_mm,
+                   z,
+                   kHalfPi,
+                   l1,
+                   l2,
+                   st,
+                   g,
+                   pressure,
+                   s_.mu * pressure);
+    }
   }
 
   std::string crack_location(const ScaledSolution& sol) const {

@@ -1,0 +1,47 @@
+#pragma once
+// A normalised solution as the user's Equilibrium (mm, N, MPa), with the fields when asked: the
+// contact model places the largest I1 and gives the fields of the parts in contact.
+#include <cmath>
+
+#include "indentation/contact/contact_model.hpp"
+#include "indentation/membrane_fields.hpp"
+#include "indentation/scaled_solution.hpp"
+#include "puncture/equilibrium.hpp"
+#include "puncture/problem.hpp"
+
+namespace puncture::detail {
+
+template <class Contact>
+Equilibrium to_physical(const Problem& p, const Contact& contact, const ScaledSolution& sol,
+                        Stage stage, const SolverOptions& options) {
+  Equilibrium e;
+  const double big_a = p.geometry.clamp_radius_mm;
+  e.status = sol.status;
+  e.message = sol.message;
+  e.configuration = sol.configuration;
+  e.stage = stage;
+  e.normalized_force = sol.f;
+  e.force_n = sol.f * force_scale_n(p);
+  e.depth_mm = sol.depth * big_a;
+  e.part_three_stretch = sol.part_three_stretch;
+  e.corner_reference_radius_mm = sol.r_corner * big_a;
+  e.part_two_top_reference_radius_mm = sol.r_top * big_a;
+  e.part_two_length_mm = sol.part_two_length * big_a;
+  e.corner_slope_rad = sol.corner_slope;
+  e.corner_tension_ratio = sol.tension_ratio;
+  e.max_first_invariant = max_first_invariant_of(sol);
+  const LargestFirstInvariant largest = contact.largest_first_invariant(sol);
+  e.max_first_invariant_reference_radius_mm = largest.reference_radius * big_a;
+  e.max_first_invariant_radius_mm = largest.radius * big_a;
+  e.max_first_invariant_part = largest.part;
+  e.clamp_residual = std::abs(sol.residual);
+  e.shooting_evaluations = sol.evaluations;
+  if (options.record_fields && sol.ok()) {
+    const FieldScales scales{big_a, p.material.shear_modulus_mpa, p.geometry.thickness_mm};
+    contact.append_contact_fields(sol, scales, e.fields);
+    append_free_fields(contact.law(), sol, contact.free_part_inner_height(sol), scales, e.fields);
+  }
+  return e;
+}
+
+}  // namespace puncture::detail
