@@ -18,11 +18,11 @@
 
 #include "cli_error.hpp"
 #include "figures.hpp"
-#include "names.hpp"
 #include "plot.hpp"
 #include "progress.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/loading_curve.hpp"
+#include "puncture/material.hpp"
 
 namespace puncture::cli {
 
@@ -55,7 +55,7 @@ constexpr std::array<Fig13Panel, 5> kFig13{{
 json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
 json inputs_json(const Problem& p) {
-  json material = {{"law", material_token(p.material.law)},
+  json material = {{"law", law_name(p.material.law)},
                    {"shear_modulus_mpa", p.material.shear_modulus_mpa}};
   if (const auto* gent = std::get_if<Gent>(&p.material.law)) material["j_lim"] = gent->j_lim;
   if (const auto* mr = std::get_if<MooneyRivlin>(&p.material.law)) material["alpha"] = mr->alpha;
@@ -127,7 +127,7 @@ json fig12a(const Problem& base) {
           i1.push_back(number(e.fields.first_invariant[i]));
           part.push_back(e.fields.part[i]);
         }
-        c["configuration"] = configuration_token(e.configuration);
+        c["configuration"] = to_token(e.configuration);
         c["part_three_stretch"] = number(e.part_three_stretch);
         c["corner_reference_radius_mm"] = e.corner_reference_radius_mm;
         c["max_i1"] = number(e.max_first_invariant);
@@ -158,7 +158,7 @@ json fig12b(const Problem& base) {
         const auto e = solve_at_force(p, force, Stage::Slip, options);
         friction.push_back(p.friction);
         stretch.push_back(e.ok() ? number(e.part_three_stretch) : json(nullptr));
-        configuration.push_back(e.ok() ? configuration_token(e.configuration) : "failed");
+        configuration.push_back(e.ok() ? to_token(e.configuration) : "failed");
       }
       series.push_back({{"indenter_radius_mm", radius_mm(p.indenter)},
                         {"radius_ratio", ratio},
@@ -183,7 +183,7 @@ json curve_json(const Problem& p, int points) {
   for (const auto& q : c.points) {
     depth.push_back(number(q.depth_mm));
     force.push_back(number(q.force_n));
-    configuration.push_back(configuration_token(q.configuration));
+    configuration.push_back(to_token(q.configuration));
   }
   out["depth_mm"] = depth;
   out["force_n"] = force;

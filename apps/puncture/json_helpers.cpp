@@ -1,7 +1,8 @@
 #include "json_helpers.hpp"
 
 #include "finite.hpp"
-#include "names.hpp"
+#include "puncture/equilibrium.hpp"
+#include "puncture/material.hpp"
 #include "stick_spec.hpp"
 
 namespace puncture::cli {
@@ -34,7 +35,7 @@ json value_or_null(const std::optional<double>& x, std::string_view what) {
 }
 
 json material_json(const Material& m, bool with_j_lim) {
-  json material = {{"law", material_token(m.law)},
+  json material = {{"law", law_name(m.law)},
                    {"shear_modulus_mpa", finite(m.shear_modulus_mpa, "shear modulus")}};
   if (const auto* gent = std::get_if<Gent>(&m.law); gent && with_j_lim)
     material["j_lim"] = finite(gent->j_lim, "J_lim");

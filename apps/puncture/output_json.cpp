@@ -2,9 +2,10 @@
 // unbounded in some states (the corner tension ratio of a held membrane) is written as null.
 #include "finite.hpp"
 #include "json_helpers.hpp"
-#include "names.hpp"
 #include "output.hpp"
 #include "part_two_onset.hpp"
+#include "puncture/equilibrium.hpp"
+#include "puncture/material.hpp"
 #include "tables.hpp"
 
 namespace puncture::cli {
@@ -28,7 +29,7 @@ json state_json(const Equilibrium& e) {
   json out = {
       {"status", to_string(e.status)},
       {"stage", to_string(e.stage)},
-      {"configuration", configuration_token(e.configuration)},
+      {"configuration", to_token(e.configuration)},
       {"force_n", finite(e.force_n, "force")},
       {"normalized_force", finite(e.normalized_force, "normalised force")},
       {"depth_mm", finite(e.depth_mm, "depth")},

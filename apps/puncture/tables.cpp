@@ -6,7 +6,8 @@
 #include <set>
 
 #include "finite.hpp"
-#include "names.hpp"
+#include "puncture/equilibrium.hpp"
+#include "puncture/material.hpp"
 
 namespace puncture::cli {
 
@@ -26,7 +27,7 @@ Table curve_table(const std::vector<CurvePoint>& points) {
                       p.force_n,
                       p.normalized_force,
                       to_string(p.stage),
-                      configuration_token(p.configuration),
+                      to_token(p.configuration),
                       p.part_three_stretch,
                       p.part_two_length_mm,
                       p.corner_slope_rad,
@@ -82,7 +83,7 @@ Table puncture_table(const PuncturePrediction& p) {
                     p.normalized_force,
                     p.depth_mm,
                     to_string(p.stage),
-                    configuration_token(p.configuration),
+                    to_token(p.configuration),
                     p.part_three_stretch,
                     p.state.max_first_invariant,
                     p.crack_reference_radius_mm,
