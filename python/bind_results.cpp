@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/loading_curve.hpp"
+#include "puncture/reports.hpp"
 
 namespace puncture::python {
 
@@ -59,17 +60,7 @@ py::object member_with_problem(py::object self, Member Owner::*member) {
 }
 
 std::string equilibrium_repr(const Equilibrium& e) {
-  return fmt::format(
-      "<Equilibrium {}: {} stage, {}, force_n={:.6g}, depth_mm={:.6g}, part_three_stretch={:.6g}, "
-      "max_first_invariant={:.6g}{}>",
-      to_string(e.status),
-      to_string(e.stage),
-      to_string(e.configuration),
-      e.force_n,
-      e.depth_mm,
-      e.part_three_stretch,
-      e.max_first_invariant,
-      e.ok() ? "" : ": " + e.message);
+  return "<Equilibrium " + brief_report(e) + ">";
 }
 
 }  // namespace
@@ -228,13 +219,7 @@ void bind_results(py::module_& m) {
           [](py::object self) { return member_with_problem(self, &PuncturePrediction::state); },
           "the full state at puncture (Equilibrium)")
       .def("__repr__", [](const PuncturePrediction& p) {
-        if (!p.found) return "<PuncturePrediction not found: " + p.message + ">";
-        return fmt::format(
-            "<PuncturePrediction force_n={:.6g}, depth_mm={:.6g}, part_three_stretch={:.6g}, {}>",
-            p.force_n,
-            p.depth_mm,
-            p.part_three_stretch,
-            p.crack_location);
+        return "<PuncturePrediction " + brief_report(p) + ">";
       });
 
   py::class_<LoadingCurve> curve(
@@ -299,15 +284,8 @@ void bind_results(py::module_& m) {
           },
           "The curve as a dict named like the CLI's CSV columns (stage and configuration as "
           "lists of their tokens)")
-      .def("__repr__", [](const LoadingCurve& c) {
-        if (!c.ok()) return "<LoadingCurve " + to_string(c.status) + ": " + c.message + ">";
-        return fmt::format("<LoadingCurve {} points, depth_mm 0 to {:.6g}, {}>",
-                           c.points.size(),
-                           c.points.empty() ? 0.0 : c.points.back().depth_mm,
-                           c.puncture.found
-                               ? fmt::format("puncture at force_n={:.6g}", c.puncture.force_n)
-                               : std::string("no puncture"));
-      });
+      .def("__repr__",
+           [](const LoadingCurve& c) { return "<LoadingCurve " + brief_report(c) + ">"; });
   curve_column(curve, "depth_mm", &CurvePoint::depth_mm, "indentation depth [mm]");
   curve_column(curve, "force_n", &CurvePoint::force_n, "indenter force [N]");
   curve_column(curve, "normalized_force", &CurvePoint::normalized_force, "F / (2 pi G H A)");

@@ -252,3 +252,13 @@ def test_every_result_has_ok_as_a_property():
     for result in (state, curve, curve.puncture, pu.inflate_at_pole_stretch(problem, 2.0)):
         assert result.ok is True
     assert type(pu.Equilibrium.ok) is property and type(pu.PuncturePrediction.ok) is property
+
+
+def test_reprs_are_the_library_reports():
+    problem = pu.Problem()
+    state = pu.solve_at_force(problem, 0.3)
+    assert repr(state).startswith("<Equilibrium converged: slip stage, ")
+    assert f"force 0.3 N" in repr(state)
+    curve = pu.loading_curve(problem, points=5)
+    assert repr(curve).startswith("<LoadingCurve converged: 5 points, depth 0 to ")
+    assert curve.puncture.crack_location in repr(curve.puncture)
