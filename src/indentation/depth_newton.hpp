@@ -6,7 +6,8 @@
 // iteration.  The Jacobian is taken by finite differences and reused from point to point along
 // a loading curve (a chord method) until the convergence slows down, so that a point started from
 // a good extrapolation of the previous ones costs three or four integrations.  Used for speed
-// only: any failure falls back to the bracketing solver (solve_scaled_at_depth).
+// only: any failure falls back to the bracketing solver
+// (IndentationShooting::solve_at_depth).
 #include <Eigen/Dense>
 #include <cmath>
 #include <optional>

@@ -49,13 +49,6 @@ ScaledSolution solve_scaled(const Problem& problem, double f, Stage stage,
       problem, options, [&](const auto& shooting) { return shooting.solve(stage, f); });
 }
 
-ScaledSolution solve_scaled_at_depth(const Problem& problem, double d, Stage stage,
-                                     const SolverOptions& options, double f_guess) {
-  return with_shooting(problem, options, [&](const auto& shooting) {
-    return shooting.solve_at_depth(stage, d, f_guess);
-  });
-}
-
 std::optional<ScaledSolution> direct_puncture(const Problem& problem,
                                               const SolverOptions& options) {
   return with_shooting(problem, options, [&](const auto& shooting) {
