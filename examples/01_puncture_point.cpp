@@ -6,7 +6,7 @@
 int main() {
   const puncture::Problem problem;  // defaults: the paper's silicone membrane
   const auto p = puncture::predict_puncture(problem);
-  if (!p.found) {
+  if (!p.ok()) {
     fmt::print("no puncture: {}\n", p.message);
     return 1;
   }

@@ -9,7 +9,7 @@ int main() {
   for (double mu : {0.0, 0.18, 0.5, 1.0, 1.95}) {
     problem.friction = mu;
     const auto p = puncture::predict_puncture(problem);
-    if (!p.found) {
+    if (!p.ok()) {
       fmt::print("mu' = {}: {}\n", mu, p.message);
       return 1;
     }

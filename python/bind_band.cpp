@@ -70,26 +70,20 @@ void bind_band(py::module_& m) {
       .def_readonly("j_lim", &BandParameters::j_lim, "None when the law is not Gent")
       .def_readonly("shear_modulus_mpa", &BandParameters::shear_modulus_mpa)
       .def("value", &BandParameters::value, py::arg("parameter"));
-  py::class_<BandEvaluation>(m, "BandEvaluation", "One predicted puncture of the band")
+  py::class_<BandEvaluation, Outcome>(m, "BandEvaluation", "One predicted puncture of the band")
       .def_readonly("parameters", &BandEvaluation::parameters)
-      .def_readonly("found", &BandEvaluation::found)
-      .def_property_readonly(
-          "ok",
-          [](const BandEvaluation& e) { return e.found; },
-          "True when a puncture point was found (found)")
-      .def_readonly("message", &BandEvaluation::message, "why not, when not found")
       .def_property_readonly("force_n",
                              [](const BandEvaluation& e) {
-                               return e.found ? std::optional<double>(e.force_n) : std::nullopt;
+                               return e.ok() ? std::optional<double>(e.force_n) : std::nullopt;
                              })
       .def_property_readonly("depth_mm",
                              [](const BandEvaluation& e) {
-                               return e.found ? std::optional<double>(e.depth_mm) : std::nullopt;
+                               return e.ok() ? std::optional<double>(e.depth_mm) : std::nullopt;
                              })
       .def_property_readonly("part_three_stretch",
                              [](const BandEvaluation& e) {
-                               return e.found ? std::optional<double>(e.part_three_stretch)
-                                              : std::nullopt;
+                               return e.ok() ? std::optional<double>(e.part_three_stretch)
+                                             : std::nullopt;
                              })
       .def_readonly("crack_location", &BandEvaluation::crack_location);
   py::class_<ParameterSensitivity>(
@@ -107,7 +101,8 @@ void bind_band(py::module_& m) {
       .def_readonly("force_monotone", &ParameterSensitivity::force_monotone)
       .def_readonly("depth_monotone", &ParameterSensitivity::depth_monotone)
       .def_readonly("force_variance_share", &ParameterSensitivity::force_variance_share);
-  py::class_<PunctureBand>(m, "PunctureBand", "The puncture force and depth over the intervals")
+  py::class_<PunctureBand, Outcome>(
+      m, "PunctureBand", "The puncture force and depth over the intervals")
       .def_readonly("nominal", &PunctureBand::nominal)
       .def_readonly("sensitivities", &PunctureBand::sensitivities)
       .def_readonly("corners", &PunctureBand::corners)
@@ -121,11 +116,6 @@ void bind_band(py::module_& m) {
       .def_readonly("depth_max_corner", &PunctureBand::depth_max_corner)
       .def_readonly("force_half_range_rss_n", &PunctureBand::force_half_range_rss_n)
       .def_readonly("dominant", &PunctureBand::dominant)
-      .def_readonly("complete", &PunctureBand::complete)
-      .def_property_readonly(
-          "ok",
-          [](const PunctureBand& b) { return b.complete; },
-          "True when every evaluation found a puncture point (complete)")
       .def_readonly("consistent_with_documented_directions",
                     &PunctureBand::consistent_with_documented_directions)
       .def_readonly("warnings", &PunctureBand::warnings)
@@ -161,7 +151,7 @@ void bind_band(py::module_& m) {
           py::gil_scoped_release release;
           band = puncture_band(problem, ranges, o);
         });
-        if (!band.nominal.found)
+        if (!band.nominal.ok())
           raise_solver_error(
               band.nominal.message,
               "no puncture point at the nominal parameters: " + band.nominal.message);
@@ -178,7 +168,7 @@ void bind_band(py::module_& m) {
       "critical I1, friction, Gent J_lim and G (each a ParameterRange, (lower, upper), or\n"
       "plus_minus(mean, sd); None keeps the problem's value), with the one-at-a-time\n"
       "sensitivities and the dominant parameter (as `puncture calibrate band`).  A corner\n"
-      "where the solver fails is in .warnings and .complete is False; SolverError when the\n"
+      "where the solver fails is in .warnings and .ok() is False; SolverError when the\n"
       "nominal problem has no puncture point.");
 }
 

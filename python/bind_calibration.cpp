@@ -64,19 +64,14 @@ std::vector<double> to_vector(const py::array_t<double, py::array::forcecast>& a
 }
 
 std::optional<double> value_of(const Inversion& i) {
-  return i.found ? std::optional<double>(i.value) : std::nullopt;
+  return i.ok() ? std::optional<double>(i.value) : std::nullopt;
 }
 
 // ----- inversions: shared by the friction and J_lim calibrations ------------------------------
 
 void bind_inversions(py::module_& m) {
-  py::class_<Inversion>(m, "Inversion", "One model parameter inverted from one measured value")
-      .def_readonly("found", &Inversion::found)
-      .def_property_readonly(
-          "ok",
-          [](const Inversion& i) { return i.found; },
-          "True when the parameter was found (found)")
-      .def_readonly("message", &Inversion::message, "why not found, or a warning")
+  py::class_<Inversion, Outcome>(
+      m, "Inversion", "One model parameter inverted from one measured value")
       .def_property_readonly(
           "value",
           [](const Inversion& i) { return value_of(i); },
@@ -87,8 +82,8 @@ void bind_inversions(py::module_& m) {
           "every solution in the searched range")
       .def_readonly("evaluations", &Inversion::evaluations)
       .def("__repr__", [](const Inversion& i) {
-        return i.found ? fmt::format("Inversion(value={:.8g})", i.value)
-                       : fmt::format("Inversion(found=False, message='{}')", i.message);
+        return i.ok() ? fmt::format("Inversion(value={:.8g})", i.value)
+                      : fmt::format("Inversion(found=False, message='{}')", i.message);
       });
   py::class_<ScanSample>(m, "ScanSample", "The model at one point of an inversion's scan")
       .def_readonly("parameter", &ScanSample::parameter)

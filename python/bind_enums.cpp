@@ -34,8 +34,15 @@ void bind_enums(py::module_& m) {
       .value("NoConvergence", Status::NoConvergence)
       .value("BeyondLocking", Status::BeyondLocking)
       .value("StickWrapsSide", Status::StickWrapsSide)
-      .value("InvalidInput", Status::InvalidInput)
       .def_property_readonly("token", [](Status s) { return to_string(s); });
+  py::class_<Outcome>(m,
+                      "Outcome",
+                      "What every result reports about itself: status, message and ok.  Invalid "
+                      "input raises ValueError instead.")
+      .def_readonly("status", &Outcome::status)
+      .def_readonly("message", &Outcome::message, "why, when not ok; a warning (or empty) when ok")
+      .def_property_readonly(
+          "ok", &Outcome::ok, "True when the result is usable (status == Status.Converged)");
 
   py::enum_<StickRule>(
       m, "StickRule", "When a membrane held at the indenter's edge starts to slide")

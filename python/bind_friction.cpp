@@ -77,7 +77,7 @@ void bind_friction(py::module_& m) {
           py::gil_scoped_release release;
           e = friction_from_hole(base, hole, chosen, o);
         });
-        if (!e.friction.found) raise_solver_error(e.friction.message, e.friction.message);
+        if (!e.friction.ok()) raise_solver_error(e.friction.message, e.friction.message);
         return e;
       },
       py::arg("problem"),

@@ -214,10 +214,9 @@ void bind_types(py::module_& m) {
       return view(self.cast<const InflationFields&>().*member, self);
     });
 
-  py::class_<InflationState> state(
+  py::class_<InflationState, Outcome> state(
       m, "InflationState", "One inflated equilibrium", py::dynamic_attr());
-  state.def_readonly("status", &InflationState::status)
-      .def_readonly("message", &InflationState::message, "why, when not converged")
+  state
       .def_readonly(
           "pole_stretch", &InflationState::pole_stretch, "equibiaxial stretch at the pole")
       .def_readonly("pressure_mpa", &InflationState::pressure_mpa, "p [MPa]")
@@ -241,8 +240,6 @@ void bind_types(py::module_& m) {
       .def_readonly("clamp_residual", &InflationState::clamp_residual)
       .def_readonly("shooting_evaluations", &InflationState::shooting_evaluations)
       .def_readonly("fields", &InflationState::fields)
-      .def_property_readonly(
-          "ok", &InflationState::ok, "True when converged (the same as status == Status.Converged)")
       .def("__repr__", &state_repr);
 
   py::enum_<ExtremumKind>(m, "ExtremumKind", "A pressure maximum (limit point) or minimum")
@@ -264,35 +261,25 @@ void bind_types(py::module_& m) {
                            e.state.pressure_mpa);
       });
 
-  py::class_<InflationBurst>(
+  py::class_<InflationBurst, Outcome>(
       m, "InflationBurst", "The first state whose largest I1 reaches the critical I1")
-      .def_readonly("found", &InflationBurst::found)
-      .def_property_readonly(
-          "ok",
-          [](const InflationBurst& b) { return b.found; },
-          "True when the burst was found (found)")
-      .def_readonly("message", &InflationBurst::message)
       .def_readonly("state", &InflationBurst::state)
       .def("__repr__", [](const InflationBurst& b) {
-        if (!b.found) return "<InflationBurst not found: " + b.message + ">";
+        if (!b.ok()) return "<InflationBurst not found: " + b.message + ">";
         return fmt::format("<InflationBurst at pole_stretch={:.8g}, pressure_mpa={:.8g}>",
                            b.state.pole_stretch,
                            b.state.pressure_mpa);
       });
 
-  py::class_<InflationCurve> curve(
+  py::class_<InflationCurve, Outcome> curve(
       m,
       "InflationCurve",
       "The inflation curve, equally spaced in pole stretch; columns are numpy arrays",
       py::dynamic_attr());
-  curve.def_readonly("status", &InflationCurve::status)
-      .def_readonly("message", &InflationCurve::message)
-      .def_readonly("end_pole_stretch", &InflationCurve::end_pole_stretch)
+  curve.def_readonly("end_pole_stretch", &InflationCurve::end_pole_stretch)
       .def_readonly("states", &InflationCurve::states, "list of InflationState (no fields)")
       .def_readonly("extrema", &InflationCurve::extrema, "list of PressureExtremum")
       .def_readonly("burst", &InflationCurve::burst)
-      .def_property_readonly(
-          "ok", &InflationCurve::ok, "True when converged (the same as status == Status.Converged)")
       .def("__len__", [](const InflationCurve& c) { return c.states.size(); })
       .def(
           "columns",
@@ -311,18 +298,16 @@ void bind_types(py::module_& m) {
             c.states.size(),
             c.end_pole_stretch,
             c.extrema.size(),
-            c.burst.found ? fmt::format("burst at pressure_mpa={:.6g}", c.burst.state.pressure_mpa)
-                          : std::string("no burst"));
+            c.burst.ok() ? fmt::format("burst at pressure_mpa={:.6g}", c.burst.state.pressure_mpa)
+                         : std::string("no burst"));
       });
   for (const auto& [name, attribute, member] : kStateColumns)
     curve.def_property_readonly(attribute, [member = member](const InflationCurve& c) {
       return column<double>(c.states, [member](const InflationState& s) { return s.*member; });
     });
 
-  py::class_<InflationAtPressure>(
+  py::class_<InflationAtPressure, Outcome>(
       m, "InflationAtPressure", "Every state at a pressure", py::dynamic_attr())
-      .def_readonly("status", &InflationAtPressure::status)
-      .def_readonly("message", &InflationAtPressure::message)
       .def_readonly("pressure_mpa", &InflationAtPressure::pressure_mpa)
       .def_readonly("max_pole_stretch", &InflationAtPressure::max_pole_stretch, "range searched")
       .def_readonly("states",
@@ -330,9 +315,6 @@ void bind_types(py::module_& m) {
                     "list of InflationState in increasing pole stretch; the first is reached "
                     "by inflating slowly from flat")
       .def_readonly("extrema", &InflationAtPressure::extrema)
-      .def_property_readonly("ok",
-                             &InflationAtPressure::ok,
-                             "True when converged (the same as status == Status.Converged)")
       .def("__len__", [](const InflationAtPressure& a) { return a.states.size(); })
       .def("__repr__", [](const InflationAtPressure& a) {
         return fmt::format("<InflationAtPressure pressure_mpa={:.6g}: {} states>",
@@ -442,7 +424,7 @@ void bind_inflation(py::module_& m) {
         const auto problem = checked(arg);
         auto b =
             released([&] { return inflation_burst(problem, options.value_or(SolverOptions{})); });
-        if (!b.found)
+        if (!b.ok())
           raise_solver_error(b.state.ok() ? Status::NoConvergence : b.state.status,
                              b.message,
                              "no burst found: " + b.message);

@@ -47,7 +47,7 @@ void bind_jlim(py::module_& m) {
           py::gil_scoped_release release;
           e = jlim_from_puncture_force(base, puncture_force_n, o);
         });
-        if (!e.j_lim.found) raise_solver_error(e.j_lim.message, e.j_lim.message);
+        if (!e.j_lim.ok()) raise_solver_error(e.j_lim.message, e.j_lim.message);
         return e;
       },
       py::arg("problem"),

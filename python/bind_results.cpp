@@ -40,7 +40,7 @@ void field(py::class_<MembraneFields>& c, const char* name, Column member, const
 
 using PointValue = double CurvePoint::*;
 
-void curve_column(py::class_<LoadingCurve>& c, const char* name, PointValue member,
+void curve_column(py::class_<LoadingCurve, Outcome>& c, const char* name, PointValue member,
                   const char* doc) {
   c.def_property_readonly(
       name,
@@ -125,9 +125,7 @@ void bind_results(py::module_& m) {
         &MembraneFields::friction_traction_mpa,
         "friction traction in Part II [MPa], else 0");
 
-  py::class_<Equilibrium>(m, "Equilibrium", "One equilibrium state", py::dynamic_attr())
-      .def_readonly("status", &Equilibrium::status)
-      .def_readonly("message", &Equilibrium::message, "why, when not converged")
+  py::class_<Equilibrium, Outcome>(m, "Equilibrium", "One equilibrium state", py::dynamic_attr())
       .def_readonly("configuration", &Equilibrium::configuration)
       .def_readonly("stage", &Equilibrium::stage)
       .def_readonly("force_n", &Equilibrium::force_n, "indenter force F [N]")
@@ -161,8 +159,6 @@ void bind_results(py::module_& m) {
       .def_readonly("clamp_residual", &Equilibrium::clamp_residual)
       .def_readonly("shooting_evaluations", &Equilibrium::shooting_evaluations)
       .def_readonly("fields", &Equilibrium::fields)
-      .def_property_readonly(
-          "ok", &Equilibrium::ok, "True when converged (the same as status == Status.Converged)")
       .def("__repr__", &equilibrium_repr);
 
   py::class_<CurvePoint>(m, "CurvePoint", "One point of the loading curve")
@@ -197,14 +193,8 @@ void bind_results(py::module_& m) {
                            s.force_sliding_n);
       });
 
-  py::class_<PuncturePrediction>(
+  py::class_<PuncturePrediction, Outcome>(
       m, "PuncturePrediction", "The predicted puncture point", py::dynamic_attr())
-      .def_readonly("found", &PuncturePrediction::found)
-      .def_property_readonly(
-          "ok",
-          [](const PuncturePrediction& p) { return p.found; },
-          "True when a puncture point was found (found)")
-      .def_readonly("message", &PuncturePrediction::message, "why not, when not found")
       .def_readonly("force_n", &PuncturePrediction::force_n)
       .def_readonly("normalized_force", &PuncturePrediction::normalized_force)
       .def_readonly("depth_mm", &PuncturePrediction::depth_mm)
@@ -222,14 +212,12 @@ void bind_results(py::module_& m) {
         return "<PuncturePrediction " + brief_report(p) + ">";
       });
 
-  py::class_<LoadingCurve> curve(
+  py::class_<LoadingCurve, Outcome> curve(
       m,
       "LoadingCurve",
       "The displacement-controlled loading curve; columns are numpy arrays",
       py::dynamic_attr());
-  curve.def_readonly("status", &LoadingCurve::status)
-      .def_readonly("message", &LoadingCurve::message)
-      .def_readonly("points", &LoadingCurve::points, "list of CurvePoint")
+  curve.def_readonly("points", &LoadingCurve::points, "list of CurvePoint")
       .def_readonly("stick_slip", &LoadingCurve::stick_slip)
       .def_readonly("part_two_onset_depth_mm",
                     &LoadingCurve::part_two_onset_depth_mm,
@@ -244,8 +232,6 @@ void bind_results(py::module_& m) {
           "puncture",
           [](py::object self) { return member_with_problem(self, &LoadingCurve::puncture); },
           "the puncture point (PuncturePrediction)")
-      .def_property_readonly(
-          "ok", &LoadingCurve::ok, "True when converged (the same as status == Status.Converged)")
       .def("__len__", [](const LoadingCurve& c) { return c.points.size(); })
       .def_property_readonly(
           "stage",
@@ -301,10 +287,8 @@ void bind_results(py::module_& m) {
                "slope of Part I at the indenter [rad]");
   curve_column(curve, "max_first_invariant", &CurvePoint::max_first_invariant, "largest I1");
 
-  py::class_<StageBoundary>(
+  py::class_<StageBoundary, Outcome>(
       m, "StageBoundary", "Where the stick criterion switches the stage", py::dynamic_attr())
-      .def_readonly("status", &StageBoundary::status)
-      .def_readonly("message", &StageBoundary::message)
       .def_readonly("switches", &StageBoundary::switches, "False: stays in its first stage")
       .def_readonly("first_stage", &StageBoundary::first_stage)
       .def_readonly("depth_mm", &StageBoundary::depth_mm, "switch depth [mm], when it switches")

@@ -86,9 +86,10 @@ py::object solve_state(const Problem& problem, double load, bool by_force, const
   {
     py::gil_scoped_release release;
     const Stage s = chosen ? *chosen : automatic_stage(problem, load, by_force, o);
-    e = by_force ? solve_at_force(problem, load, s, o) : solve_at_depth(problem, load, s, o);
+    e = raising_value_error([&] {
+      return by_force ? solve_at_force(problem, load, s, o) : solve_at_depth(problem, load, s, o);
+    });
   }
-  if (e.status == Status::InvalidInput) throw py::value_error(e.message);
   if (!e.ok())
     throw SolverFailure(e.status,
                         e.message,
@@ -177,9 +178,9 @@ void bind_solve(py::module_& m) {
         LoadingCurve c;
         {
           py::gil_scoped_release release;
-          c = loading_curve(problem, curve, options.value_or(SolverOptions{}));
+          c = raising_value_error(
+              [&] { return loading_curve(problem, curve, options.value_or(SolverOptions{})); });
         }
-        if (c.status == Status::InvalidInput) throw py::value_error(c.message);
         if (!c.ok())
           throw SolverFailure(
               c.status,
@@ -205,7 +206,7 @@ void bind_solve(py::module_& m) {
           py::gil_scoped_release release;
           p = predict_puncture(problem, options.value_or(SolverOptions{}));
         }
-        if (!p.found) {
+        if (!p.ok()) {
           const Status status = p.state.ok() ? Status::NoConvergence : p.state.status;
           throw SolverFailure(status, p.message, "no puncture point found: " + p.message);
         }

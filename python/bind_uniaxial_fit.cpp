@@ -68,13 +68,7 @@ void bind_uniaxial(py::module_& m) {
             p.standard_error ? fmt::format("{:.3g}", *p.standard_error) : std::string("None"));
       });
 
-  py::class_<UniaxialFit>(m, "UniaxialFit", "Least-squares fit of a uniaxial tensile test")
-      .def_readonly("converged", &UniaxialFit::converged)
-      .def_property_readonly(
-          "ok",
-          [](const UniaxialFit& f) { return f.converged; },
-          "True when the fit converged (converged)")
-      .def_readonly("message", &UniaxialFit::message)
+  py::class_<UniaxialFit, Outcome>(m, "UniaxialFit", "Least-squares fit of a uniaxial tensile test")
       .def_readonly("law", &UniaxialFit::law)
       .def_readonly("material", &UniaxialFit::material, "the fit as a Material; None if invalid")
       .def_readonly("parameters", &UniaxialFit::parameters, "G first")
@@ -148,8 +142,7 @@ void bind_uniaxial(py::module_& m) {
           py::gil_scoped_release release;
           fit = fit_uniaxial(data, chosen);
         });
-        if (!fit.converged)
-          raise_solver_error(fit.message, "the fit did not converge: " + fit.message);
+        if (!fit.ok()) raise_solver_error(fit.message, "the fit did not converge: " + fit.message);
         return fit;
       },
       py::arg("stretch"),

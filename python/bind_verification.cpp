@@ -51,13 +51,7 @@ void bind_verification(py::module_& m) {
           [](py::object self) { return view(self.cast<const FePart&>().deflection_mm, self); },
           "deflection z at the nodes [mm]");
 
-  py::class_<FeState>(m, "FeState", "A finite-element equilibrium at a prescribed depth")
-      .def_readonly("converged", &FeState::converged)
-      .def_property_readonly(
-          "ok",
-          [](const FeState& s) { return s.converged; },
-          "True when the minimisation converged (converged)")
-      .def_readonly("message", &FeState::message)
+  py::class_<FeState, Outcome>(m, "FeState", "A finite-element equilibrium at a prescribed depth")
       .def_readonly("contact", &FeState::contact)
       .def_readonly("order", &FeState::order)
       .def_readonly("depth_mm", &FeState::depth_mm)
@@ -130,12 +124,9 @@ void bind_verification(py::module_& m) {
                            to_string(c.verdict));
       });
 
-  py::class_<VerificationReport>(m, "VerificationReport")
+  py::class_<VerificationReport, Outcome>(m, "VerificationReport")
       .def_readonly("checks", &VerificationReport::checks)
       .def_readonly("elements", &VerificationReport::elements)
-      .def_property_readonly("passed", &VerificationReport::passed)
-      .def_property_readonly(
-          "ok", &VerificationReport::passed, "True when no check failed (passed)")
       .def("count", &VerificationReport::count, py::arg("verdict"));
 
   m.def(

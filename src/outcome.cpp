@@ -14,8 +14,12 @@ std::string to_string(Status s) {
       return "beyond locking";
     case Status::StickWrapsSide:
       return "stick wraps side";
-    case Status::InvalidInput:
-      return "invalid input";
+    case Status::NotReached:
+      return "not reached";
+    case Status::Incomplete:
+      return "incomplete";
+    case Status::ChecksFailed:
+      return "checks failed";
   }
   return "?";
 }

@@ -132,7 +132,7 @@ std::string run_friction(const CLI::App& app, const ProblemFlags& pf, const Cali
   }
   const auto& primary =
       report.at_measured_force ? *report.at_measured_force : report.at_predicted_puncture;
-  if (!primary.friction.found) throw SolveError(primary.friction.message);
+  if (!primary.friction.ok()) throw SolveError(primary.friction.message);
   return calibration_text(report, format);
 }
 
@@ -184,7 +184,7 @@ std::string run_jlim(const CLI::App& app, const ProblemFlags& pf, const Calibrat
   } catch (const std::invalid_argument& e) {
     rethrow_as_input(e);
   }
-  if (!report.estimate.j_lim.found) throw SolveError(report.estimate.j_lim.message);
+  if (!report.estimate.j_lim.ok()) throw SolveError(report.estimate.j_lim.message);
   return calibration_text(report, format);
 }
 
@@ -264,7 +264,7 @@ std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format f
   } catch (const std::invalid_argument& e) {
     rethrow_as_input(e);
   }
-  if (!report.band.nominal.found)
+  if (!report.band.nominal.ok())
     throw SolveError("no puncture point at the nominal parameters: " + report.band.nominal.message);
   return calibration_text(report, format);
 }
@@ -310,7 +310,7 @@ std::string run_fit_uniaxial(const CLI::App& app, const ProblemFlags& pf, const 
   } catch (const std::invalid_argument& e) {
     rethrow_as_input(e, f.uniaxial_data.c_str());
   }
-  if (!report.fit.converged) throw SolveError("the fit did not converge: " + report.fit.message);
+  if (!report.fit.ok()) throw SolveError("the fit did not converge: " + report.fit.message);
   return calibration_text(report, format);
 }
 

@@ -188,7 +188,7 @@ json curve_json(const Problem& p, int points) {
   out["depth_mm"] = depth;
   out["force_n"] = force;
   out["configuration"] = configuration;
-  if (c.puncture.found)
+  if (c.puncture.ok())
     out["puncture"] = {{"depth_mm", number(c.puncture.depth_mm)},
                        {"force_n", number(c.puncture.force_n)},
                        {"part_three_stretch", number(c.puncture.part_three_stretch)},

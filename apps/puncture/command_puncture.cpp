@@ -16,7 +16,7 @@ std::string run_puncture(const Problem& problem, Format format) {
     progress.note("locating the puncture point");
     report.puncture = predict_puncture(problem);
   }
-  if (!report.puncture.found)
+  if (!report.puncture.ok())
     throw SolveError("no puncture point found: " + report.puncture.message);
   return render(report, format);
 }

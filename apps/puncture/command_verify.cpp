@@ -56,7 +56,7 @@ VerifyOutcome run_verify(const Problem& problem, const VerifyFlags& f, Format fo
   }
   VerifyOutcome outcome;
   outcome.text = render(report, format);
-  outcome.passed = report.verification.passed();
+  outcome.passed = report.verification.ok();
   outcome.failed = report.verification.count(Verdict::Fail);
   return outcome;
 }

@@ -220,7 +220,7 @@ Table curve_rows(const InflationCurve& c, bool with_points) {
     for (const auto& e : c.extrema)
       all.push_back(
           {&e.state, e.kind == ExtremumKind::Maximum ? "pressure_maximum" : "pressure_minimum"});
-    if (c.burst.found && c.burst.state.pole_stretch <= c.end_pole_stretch)
+    if (c.burst.ok() && c.burst.state.pole_stretch <= c.end_pole_stretch)
       all.push_back({&c.burst.state, "burst"});
     std::stable_sort(all.begin(), all.end(), [](const Labelled& a, const Labelled& b) {
       return a.state->pole_stretch < b.state->pole_stretch;
@@ -244,7 +244,7 @@ std::string summary(const InflationCurveReport& r) {
                      r.to_burst ? "to the burst" : "set by --max-pole-stretch");
   extrema_lines(out, c.extrema);
   out += fmt::format("Burst (largest I1 = {})\n", num(r.problem.critical_i1, "critical I1"));
-  if (!c.burst.found) {
+  if (!c.burst.ok()) {
     line(out, "burst", "not found: " + c.burst.message);
   } else {
     state_lines(out, c.burst.state);
@@ -263,8 +263,8 @@ json curve_json(const InflationCurveReport& r) {
   const auto& c = r.curve;
   json extrema = json::array();
   for (const auto& e : c.extrema) extrema.push_back(extremum_json(e));
-  json burst = {{"found", c.burst.found}};
-  if (c.burst.found)
+  json burst = {{"found", c.burst.ok()}};
+  if (c.burst.ok())
     burst.update(state_json(c.burst.state, false));
   else
     burst["message"] = c.burst.message;

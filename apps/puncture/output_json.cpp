@@ -19,7 +19,7 @@ json inputs_json(const Problem& p) {
 }
 
 json puncture_json(const PuncturePrediction& p) {
-  if (!p.found) return {{"found", false}, {"message", p.message}};
+  if (!p.ok()) return {{"found", false}, {"message", p.message}};
   json out = rows_json(puncture_table(p)).at(0);
   out["found"] = true;
   return out;
@@ -112,7 +112,7 @@ std::string json_text(const VerifyReport& r) {
   }
   return dump({{"inputs", inputs_json(r.problem)},
                {"finite_elements", v.elements},
-               {"passed", v.passed()},
+               {"passed", v.ok()},
                {"counts",
                 {{"pass", v.count(Verdict::Pass)},
                  {"fail", v.count(Verdict::Fail)},

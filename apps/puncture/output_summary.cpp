@@ -74,7 +74,7 @@ std::string part_two_text(const CurveReport& r) {
 
 void puncture_lines(std::string& out, const PuncturePrediction& p) {
   out += "Puncture\n";
-  if (!p.found) {
+  if (!p.ok()) {
     line(out, "puncture", "not found: " + p.message);
     return;
   }
@@ -110,7 +110,7 @@ std::string summary_text(const CurveReport& r) {
   line(out, "stick -> slip switch", switch_text(r));
   line(out, "Part II appears", part_two_text(r));
   puncture_lines(out, c.puncture);
-  if (c.puncture.found && c.puncture.depth_mm < end * (1.0 - 1e-9))
+  if (c.puncture.ok() && c.puncture.depth_mm < end * (1.0 - 1e-9))
     out += "  (the curve continues past the puncture depth)\n";
   out += "Curve (sampled; --format csv for every point)\n";
   text_table(out, curve_table(c.points), sampled_rows(c.points));
@@ -216,7 +216,7 @@ std::string summary_text(const VerifyReport& r) {
                      v.count(Verdict::Pass),
                      v.count(Verdict::Fail),
                      v.count(Verdict::Skipped),
-                     v.passed() ? "" : "  (tolerances and their reasons: --format csv or json)");
+                     v.ok() ? "" : "  (tolerances and their reasons: --format csv or json)");
   return out;
 }
 

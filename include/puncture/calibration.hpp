@@ -17,6 +17,7 @@
 #include "puncture/csv.hpp"
 #include "puncture/kinematics.hpp"
 #include "puncture/loading_curve.hpp"
+#include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture {
@@ -53,9 +54,7 @@ std::vector<BurstTest> burst_tests_from_table(const CsvTable& table,
 // ---------------------------------------------------------------------------------------------
 // One model parameter inverted from one measured value by a scan and Boost's TOMS 748.
 
-struct Inversion {
-  bool found = false;
-  std::string message;            // why not found, or a warning (several solutions)
+struct Inversion : Outcome {      // message: why not found, or a warning (several solutions)
   double value = 0.0;             // the parameter, when found
   std::vector<double> solutions;  // every solution in the searched range (value is the first)
   int evaluations = 0;            // model evaluations in the refinement
@@ -192,9 +191,7 @@ struct FittedParameter {
   std::string note;  // why not identifiable, or what the value means
 };
 
-struct UniaxialFit {
-  bool converged = false;
-  std::string message;  // the optimiser's stop reason when not converged
+struct UniaxialFit : Outcome {  // message: the optimiser's stop reason when not converged
   FitLaw law = FitLaw::Gent;
   // The best fit as a material the solver accepts; empty when it is not one (Gent with
   // c = 1/J_lim <= 0, Mooney-Rivlin alpha outside [0, 1), G <= 0).

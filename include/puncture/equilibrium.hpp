@@ -46,9 +46,7 @@ struct MembraneFields {
   std::size_t size() const { return part.size(); }
 };
 
-struct Equilibrium {
-  Status status = Status::NoConvergence;
-  std::string message;  // why, when not converged
+struct Equilibrium : Outcome {
   Configuration configuration = Configuration::Unloaded;
   Stage stage = Stage::Slip;
 
@@ -68,8 +66,6 @@ struct Equilibrium {
   double clamp_residual = 0.0;   // |lambda2(A) - 1| reached by the shooting
   int shooting_evaluations = 0;  // integrations of Part I used
   MembraneFields fields;
-
-  bool ok() const { return status == Status::Converged; }
 };
 
 // Equilibrium at indenter force F [N] in the given stage (the solver picks the configuration).

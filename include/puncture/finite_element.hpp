@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture {
@@ -39,9 +40,7 @@ struct FePart {
   std::vector<double> deflection_mm;  // deflection z below the clamp plane at the nodes [mm]
 };
 
-struct FeState {
-  bool converged = false;
-  std::string message;  // why, when not converged
+struct FeState : Outcome {
   FeContact contact = FeContact::Frictionless;
   int order = 2;
   double depth_mm = 0.0;                    // prescribed indentation depth [mm]

@@ -62,9 +62,8 @@ struct InflationFields {
 };
 
 // One inflated equilibrium.
-struct InflationState {
-  Status status = Status::NoConvergence;  // Converged, NoConvergence or BeyondLocking
-  std::string message;                    // why, when not converged
+struct InflationState : Outcome {  // Converged, NoConvergence or BeyondLocking
+  std::string message;             // why, when not converged
 
   double pole_stretch = 1.0;           // equibiaxial stretch at the pole, lambda0
   double pressure_mpa = 0.0;           // p [MPa]
@@ -84,8 +83,6 @@ struct InflationState {
   double clamp_residual = 0.0;                           // |lambda2(A) - 1| reached by the shooting
   int shooting_evaluations = 0;                          // integrations used
   InflationFields fields;                                // when SolverOptions::record_fields
-
-  bool ok() const { return status == Status::Converged; }
 };
 
 // The equilibrium whose pole stretch is `pole_stretch` (>= 1).  Throws std::invalid_argument
@@ -115,21 +112,15 @@ struct PressureExtremum {
   double curvature_mpa = 0.0;       // d2p/dlambda0^2 [MPa] there (< 0 at a maximum)
 };
 
-struct InflationBurst {
-  bool found = false;
-  std::string message;   // why not, when not found
+struct InflationBurst : Outcome {
   InflationState state;  // the first state whose largest I1 reaches the critical I1
 };
 
-struct InflationCurve {
-  Status status = Status::NoConvergence;
-  std::string message;
+struct InflationCurve : Outcome {
   double end_pole_stretch = 1.0;          // the curve's last pole stretch
   std::vector<InflationState> states;     // equally spaced in pole stretch, without fields
   std::vector<PressureExtremum> extrema;  // in order of pole stretch
   InflationBurst burst;                   // where the largest I1 reaches the critical I1
-
-  bool ok() const { return status == Status::Converged; }
 };
 
 // The inflation curve from the flat state to the burst (or to max_pole_stretch), its pressure
@@ -146,11 +137,8 @@ InflationBurst inflation_burst(const InflationProblem& problem, const SolverOpti
 // a scan of `scan_points` stretches, then a root of dp/dlambda0 (a four-point central
 // difference) by TOMS 748 in each bracket.  Converged with no extrema when the pressure is
 // monotone (e.g. Mooney-Rivlin with alpha = 0.1 up to its burst).
-struct PressureExtrema {
-  Status status = Status::NoConvergence;
-  std::string message;
+struct PressureExtrema : Outcome {
   std::vector<PressureExtremum> extrema;
-  bool ok() const { return status == Status::Converged; }
 };
 PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pole_stretch,
                                  int scan_points = 60, const SolverOptions& options = {});
@@ -159,14 +147,11 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
 // max_pole_stretch), in increasing pole stretch: states[0] is the one reached by slowly
 // inflating from flat; more than one exist where the pressure curve turns back.  Empty, with
 // a message, when no state in the range carries that pressure (e.g. above a limit point).
-struct InflationAtPressure {
-  Status status = Status::NoConvergence;  // Converged also when no state carries the pressure
-  std::string message;
+struct InflationAtPressure : Outcome {  // Converged also when no state carries the pressure
   double pressure_mpa = 0.0;
   double max_pole_stretch = 1.0;  // the range searched
   std::vector<InflationState> states;
   std::vector<PressureExtremum> extrema;  // of the range searched
-  bool ok() const { return status == Status::Converged; }
 };
 InflationAtPressure inflate_at_pressure(const InflationProblem& problem, double pressure_mpa,
                                         const InflationCurveOptions& range = {},

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "puncture/equilibrium.hpp"
+#include "puncture/outcome.hpp"
 
 namespace puncture {
 
@@ -30,9 +31,7 @@ struct StickSlipSwitch {
   double force_sliding_n = 0.0;  // force just after (membrane sliding), at the same depth
 };
 
-struct PuncturePrediction {
-  bool found = false;
-  std::string message;  // why not, when not found
+struct PuncturePrediction : Outcome {
   double force_n = 0.0;
   double normalized_force = 0.0;
   double depth_mm = 0.0;
@@ -51,22 +50,17 @@ struct CurveOptions {
   std::function<void(int done, int total)> progress;  // called after each point, if set
 };
 
-struct LoadingCurve {
-  Status status = Status::NoConvergence;
-  std::string message;
+struct LoadingCurve : Outcome {
   std::vector<CurvePoint> points;
   StickSlipSwitch stick_slip;
   std::optional<double> part_two_onset_depth_mm;  // where Part II appears in the slip stage
   std::optional<double> part_two_onset_force_n;
   bool part_two_onset_at_switch = false;  // Part II appears as the held membrane starts sliding
   PuncturePrediction puncture;
-  bool ok() const { return status == Status::Converged; }
 };
 
 // Stage the membrane is in at a given depth, per the problem's stick criterion.
-struct StageBoundary {
-  Status status = Status::Converged;
-  std::string message;
+struct StageBoundary : Outcome {
   bool switches = false;  // false: the membrane stays in its first stage
   Stage first_stage = Stage::Slip;
   double depth_mm = 0.0;  // switch depth when it switches

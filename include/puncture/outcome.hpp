@@ -1,12 +1,14 @@
 #pragma once
 // How every result and every input error is reported.
-//  - A result carries a Status and a message (ok() when Converged): a load the membrane cannot
-//    carry, or a solver that does not converge, is a value, never an exception.
-//  - Invalid input is a list of ValidationError {parameter, message}.  `parameter` is the path of
-//    the attribute in the problem ("geometry.clamp_radius_mm", "material.law.j_lim") or the name
-//    of the argument ("pressure_mpa"), so that the CLI and Python name their own flag or keyword
-//    without reading the message.  Functions that do not return a Status throw InvalidInput (a
-//    std::invalid_argument) carrying the list.
+//  - Every result is an Outcome: a Status and a message (ok() when Converged).  A load the
+//    membrane cannot carry, a target the model cannot reach or a solver that does not converge
+//    is a value, never an exception.
+//  - Invalid input is not an outcome: every function throws InvalidInput (a
+//    std::invalid_argument) carrying a list of ValidationError {parameter, message}.
+//    `parameter` is the path of the attribute in the problem ("geometry.clamp_radius_mm",
+//    "material.law.j_lim") or the name of the argument ("pressure_mpa"), so that the CLI and
+//    Python name their own flag or keyword without reading the message.  validation_errors()
+//    of a problem lists them without throwing, to report all before anything runs.
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,7 +20,9 @@ enum class Status {
   NoConvergence,   // the shooting did not reach the clamp condition; message says where
   BeyondLocking,   // the load needs stretches beyond the material's locking limit
   StickWrapsSide,  // a held membrane would wrap the indenter's side: outside the stick model
-  InvalidInput,    // the problem or the requested load is invalid; message names it
+  NotReached,      // the criterion or the target is not reached in the range the model covers
+  Incomplete,      // some of the evaluations behind the result failed; the message lists them
+  ChecksFailed,    // a verification check is outside its tolerance
 };
 
 std::string to_string(Status status);
@@ -26,6 +30,15 @@ std::string to_string(Status status);
 struct ValidationError {
   std::string parameter;  // attribute path or argument name, e.g. "geometry.clamp_radius_mm"
   std::string message;    // what is wrong, starting with the parameter's name in words
+};
+
+// What every result reports about itself.  Results derive from it:
+//   if (const auto p = predict_puncture(problem); p.ok()) use(p.force_n);
+//   else fmt::print("{}: {}\n", to_string(p.status), p.message);
+struct Outcome {
+  Status status = Status::NoConvergence;
+  std::string message;  // why, when not ok(); a warning (or empty) when ok()
+  bool ok() const { return status == Status::Converged; }
 };
 
 class InvalidInput : public std::invalid_argument {

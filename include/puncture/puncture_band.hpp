@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "puncture/options.hpp"
+#include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture {
@@ -79,10 +80,8 @@ struct BandParameters {
 BandParameters band_parameters(const Problem& problem);
 
 // One predicted puncture (predict_puncture) at one parameter set.
-struct BandEvaluation {
+struct BandEvaluation : Outcome {  // of predict_puncture at these parameters
   BandParameters parameters;
-  bool found = false;
-  std::string message;  // why not, when the solver found no puncture point
   double force_n = 0.0;
   double depth_mm = 0.0;
   double part_three_stretch = 1.0;
@@ -113,7 +112,8 @@ struct ParameterSensitivity {
   std::optional<double> force_variance_share;
 };
 
-struct PunctureBand {
+// ok() when every evaluation found a puncture point; else Incomplete, the message naming them.
+struct PunctureBand : Outcome {
   BandEvaluation nominal;
   std::vector<ParameterSensitivity> sensitivities;  // critical I1, friction, J_lim, G: those given
   std::vector<BandEvaluation> corners;              // every corner of the box of intervals
@@ -128,8 +128,6 @@ struct PunctureBand {
   std::optional<double> force_half_range_rss_n;
   // The parameter whose interval moves the force most (largest |force_change_n|).
   std::optional<BandParameter> dominant;
-  // Every evaluation found a puncture point.
-  bool complete = false;
   // Every sensitivity is monotone, moves the force as documented, and the extreme force
   // corners are those the documented directions give.
   bool consistent_with_documented_directions = false;

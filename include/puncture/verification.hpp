@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "puncture/finite_element.hpp"
+#include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture {
@@ -46,10 +47,10 @@ struct VerifyOptions {
   std::function<void(int, int, std::string_view)> progress;
 };
 
-struct VerificationReport {
+// ok() when no check failed; else ChecksFailed, the message naming them.
+struct VerificationReport : Outcome {
   std::vector<VerificationCheck> checks;
   int elements = 0;
-  bool passed() const;  // no check failed
   int count(Verdict verdict) const;
 };
 

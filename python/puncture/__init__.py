@@ -27,7 +27,7 @@ solver, finite elements minimising the stored energy, fe_solve_at_depths; work =
 small-deflection limit) and returns them with verdicts:
 
     report = puncture.verify(problem)
-    assert report.passed
+    assert report.ok
 
 Invalid input raises ValueError naming the attribute and its allowed range; a solve that does
 not converge raises SolverError (a RuntimeError) with .status and .message.

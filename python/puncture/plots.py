@@ -174,7 +174,7 @@ class _Curve:
             self.switch = (s.depth_mm, s.force_stuck_n, s.force_sliding_n) if s.occurs else None
             self.onset_depth = obj.part_two_onset_depth_mm
             p = obj.puncture
-            self.puncture = (p.depth_mm, p.force_n, p.crack_location) if p.found else None
+            self.puncture = (p.depth_mm, p.force_n, p.crack_location) if p.ok else None
         if self.puncture is not None and self.depth.size and self.puncture[0] > self.depth[-1] * (
             1 + 1e-9
         ):
@@ -612,7 +612,7 @@ class _InflationCurve:
                              e.state.volume_mm3) for e in obj.extrema]
             b = obj.burst
             self.burst = ((b.state.pole_stretch, b.state.pressure_mpa, b.state.volume_mm3)
-                          if b.found else None)
+                          if b.ok else None)
             p = getattr(obj, "problem", None)
             self.info = {} if p is None else {
                 "clamp_radius_mm": p.clamp_radius_mm,

@@ -22,7 +22,7 @@ def rel(a, b):
 def test_default_puncture_force_matches_cli(cli):
     prediction = pu.predict_puncture(pu.Problem())
     from_cli = cli.json("puncture")["puncture"]
-    assert prediction.found
+    assert prediction.ok
     assert rel(prediction.force_n, from_cli["force_n"]) < 1e-6
     assert rel(prediction.depth_mm, from_cli["depth_mm"]) < 1e-6
     assert rel(prediction.part_three_stretch, from_cli["part_three_stretch"]) < 1e-6

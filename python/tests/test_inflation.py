@@ -36,7 +36,7 @@ def test_curve_columns_extrema_and_burst(gent_curve):
     assert isinstance(c.pressure_mpa, np.ndarray) and c.pressure_mpa.size == 40
     assert np.all(np.diff(c.volume_mm3) > 0)
     assert [e.kind for e in c.extrema] == [pu.ExtremumKind.Maximum, pu.ExtremumKind.Minimum]
-    assert c.burst.found
+    assert c.burst.ok
     assert c.burst.state.max_first_invariant == pytest.approx(95.2, rel=1e-9)
     assert c.columns()["max_i1"][-1] == pytest.approx(95.2, rel=1e-9)
 

@@ -36,7 +36,7 @@ std::string what_is_measured(HoleMethod method, double force_n) {
 Inversion invert_ratio(const detail::Model& model, const std::vector<ScanSample>& samples,
                        double target, double max_friction, const std::string& where) {
   auto out = detail::invert(model, samples, target, 1e-9 * std::max(1.0, max_friction));
-  if (out.found) {
+  if (out.ok()) {
     if (out.solutions.size() > 1) {
       std::string all;
       for (const double s : out.solutions)
@@ -131,7 +131,7 @@ FrictionEstimate friction_from_hole(const Problem& problem, const HoleMeasuremen
       return state.part_three_stretch;
     }
     const auto puncture = predict_puncture(with_friction(mu), solver);
-    if (!puncture.found) return std::nullopt;
+    if (!puncture.ok()) return std::nullopt;
     return puncture.part_three_stretch;
   };
 
@@ -155,14 +155,14 @@ FrictionEstimate friction_from_hole(const Problem& problem, const HoleMeasuremen
         "no standard deviation of the ratio given";
   }
 
-  if (out.friction.found) {
+  if (out.friction.ok()) {
     const Problem fitted = with_friction(out.friction.value);
     if (method == HoleMethod::AtMeasuredForce) {
       const auto state = solve_at_force(fitted, force, Stage::Slip, solver);
       if (state.ok()) out.max_first_invariant = state.max_first_invariant;
     } else {
       const auto puncture = predict_puncture(fitted, solver);
-      if (puncture.found) {
+      if (puncture.ok()) {
         out.max_first_invariant = puncture.state.max_first_invariant;
         out.puncture_force_n = puncture.force_n;
         out.puncture_depth_mm = puncture.depth_mm;

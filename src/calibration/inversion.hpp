@@ -71,14 +71,17 @@ inline Inversion invert(const Model& model, const std::vector<ScanSample>& sampl
     }
   }
   if (!out.solutions.empty()) {
-    out.found = true;
+    out.status = Status::Converged;
     out.value = out.solutions.front();
+  } else {
+    // No root in the range and no failure: the target is outside what the model reaches.
+    out.status = failures.empty() ? Status::NotReached : Status::NoConvergence;
   }
   if (!failures.empty()) {
     std::string all;
     for (const auto& f : failures) all += (all.empty() ? "" : "; ") + f;
     out.message = "a solution could not be refined " + all;
-    if (out.found) out.message = "warning: " + out.message;
+    if (out.ok()) out.message = "warning: " + out.message;
   }
   return out;
 }

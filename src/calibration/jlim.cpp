@@ -45,7 +45,7 @@ JLimEstimate jlim_from_puncture_force(const Problem& problem, double puncture_fo
   // log of the predicted puncture force, as a function of u.
   const detail::Model model = [&](double u) -> std::optional<double> {
     const auto puncture = predict_puncture(with_j_lim(j_lim_of(i1_excess, u)), solver);
-    if (!puncture.found || !(puncture.force_n > 0.0)) return std::nullopt;
+    if (!puncture.ok() || !(puncture.force_n > 0.0)) return std::nullopt;
     return std::log(puncture.force_n);
   };
 
@@ -70,23 +70,23 @@ JLimEstimate jlim_from_puncture_force(const Problem& problem, double puncture_fo
     Problem neo = base;
     neo.material.law = NeoHookean{};
     const auto p = predict_puncture(neo, solver);
-    if (p.found) out.neo_hookean_force_n = p.force_n;
+    if (p.ok()) out.neo_hookean_force_n = p.force_n;
   }
 
   auto inv = detail::invert(model, samples, std::log(puncture_force_n), 1e-10);
   for (auto& s : inv.solutions) s = j_lim_of(i1_excess, s);
-  if (inv.found) inv.value = inv.solutions.front();
+  if (inv.ok()) inv.value = inv.solutions.front();
   const auto failed = detail::failed_samples(out.scan);
   const auto failed_note =
       failed.empty() ? std::string() : fmt::format("; the solver failed at J_lim {}", failed);
-  if (inv.found && inv.solutions.size() > 1) {
+  if (inv.ok() && inv.solutions.size() > 1) {
     std::string all;
     for (const double s : inv.solutions) all += fmt::format("{}{:.6g}", all.empty() ? "" : ", ", s);
     inv.message = fmt::format(
         "several J_lim give the puncture force {:.6g} N: {}; the force does not determine J_lim",
         puncture_force_n,
         all);
-  } else if (!inv.found) {
+  } else if (!inv.ok()) {
     std::string why;
     if (out.largest_force_n > 0.0 && puncture_force_n > out.largest_force_n)
       why = fmt::format(
@@ -125,7 +125,7 @@ JLimEstimate jlim_from_puncture_force(const Problem& problem, double puncture_fo
   }
   out.j_lim = inv;
 
-  if (out.j_lim.found) {
+  if (out.j_lim.ok()) {
     const Problem fitted = with_j_lim(out.j_lim.value);
     out.puncture = predict_puncture(fitted, solver);
     const auto state = solve_at_force(fitted, puncture_force_n, Stage::Slip, solver);

@@ -65,9 +65,9 @@ BandEvaluation evaluate(const Problem& base, const BandParameters& b, const Solv
   BandEvaluation e;
   e.parameters = b;
   const auto p = predict_puncture(with(base, b), solver);
-  e.found = p.found;
+  e.status = p.status;
   e.message = p.message;
-  if (p.found) {
+  if (p.ok()) {
     e.force_n = p.force_n;
     e.depth_mm = p.depth_mm;
     e.part_three_stretch = p.part_three_stretch;
@@ -88,13 +88,13 @@ template <class Get>
 bool monotone(const std::vector<BandEvaluation>& samples, Get get) {
   int seen = 0;
   for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
-    if (!samples[i].found || !samples[i + 1].found) return false;
+    if (!samples[i].ok() || !samples[i + 1].ok()) return false;
     const int d = direction(get(samples[i]), get(samples[i + 1]));
     if (d == 0) continue;
     if (seen != 0 && d != seen) return false;
     seen = d;
   }
-  return samples.empty() || samples.back().found;
+  return samples.empty() || samples.back().ok();
 }
 
 std::vector<double> grid(const ParameterRange& r, double nominal, int n) {
@@ -265,9 +265,9 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
   solver.record_fields = false;
   PunctureBand out;
   out.nominal = evaluate(problem, nominal, solver);
-  if (!out.nominal.found)
+  if (!out.nominal.ok())
     out.warnings.push_back("no puncture point at the nominal parameters: " + out.nominal.message);
-  bool complete = out.nominal.found;
+  int failed = out.nominal.ok() ? 0 : 1;
 
   for (const auto p : varied) {
     const auto& r = *ranges.of(p);
@@ -283,8 +283,8 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
       BandParameters b = nominal;
       set(b, p, x);
       s.samples.push_back(evaluate(problem, b, solver));
-      if (!s.samples.back().found) {
-        complete = false;
+      if (!s.samples.back().ok()) {
+        ++failed;
         out.warnings.push_back(fmt::format("{} = {:.6g} (others nominal): no puncture point: {}",
                                            to_string(p),
                                            x,
@@ -293,7 +293,7 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
     }
     s.at_lower = s.samples.front();
     s.at_upper = s.samples.back();
-    if (s.at_lower.found && s.at_upper.found) {
+    if (s.at_lower.ok() && s.at_upper.ok()) {
       s.force_change_n = s.at_upper.force_n - s.at_lower.force_n;
       s.depth_change_mm = s.at_upper.depth_mm - s.at_lower.depth_mm;
       s.force_direction = direction(s.at_lower.force_n, s.at_upper.force_n);
@@ -301,7 +301,7 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
     }
     s.force_monotone = monotone(s.samples, [](const BandEvaluation& e) { return e.force_n; });
     s.depth_monotone = monotone(s.samples, [](const BandEvaluation& e) { return e.depth_mm; });
-    if (s.at_lower.found && s.at_upper.found) {
+    if (s.at_lower.ok() && s.at_upper.ok()) {
       if (!s.force_monotone || !s.depth_monotone)
         out.warnings.push_back(fmt::format(
             "the puncture {} is not monotone in {} over [{:.6g}, {:.6g}]: the corners may not "
@@ -349,8 +349,8 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
   // The corners, and the band over them and the nominal point.
   for (const auto& b : corner_parameters) {
     out.corners.push_back(evaluate(problem, b, solver));
-    if (!out.corners.back().found) {
-      complete = false;
+    if (!out.corners.back().ok()) {
+      ++failed;
       out.warnings.push_back(
           fmt::format("corner {}: no puncture point: {}", describe(b), out.corners.back().message));
     }
@@ -359,13 +359,13 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
     if (!lo || x < *lo) lo = x;
     if (!hi || x > *hi) hi = x;
   };
-  if (out.nominal.found) {
+  if (out.nominal.ok()) {
     include(out.force_min_n, out.force_max_n, out.nominal.force_n);
     include(out.depth_min_mm, out.depth_max_mm, out.nominal.depth_mm);
   }
   for (std::size_t i = 0; i < out.corners.size(); ++i) {
     const auto& c = out.corners[i];
-    if (!c.found) continue;
+    if (!c.ok()) continue;
     if (!out.force_min_corner || c.force_n < out.corners[*out.force_min_corner].force_n)
       out.force_min_corner = i;
     if (!out.force_max_corner || c.force_n > out.corners[*out.force_max_corner].force_n)
@@ -377,7 +377,12 @@ PunctureBand puncture_band(const Problem& problem, const BandRanges& ranges,
     include(out.force_min_n, out.force_max_n, c.force_n);
     include(out.depth_min_mm, out.depth_max_mm, c.depth_mm);
   }
-  out.complete = complete;
+  const bool complete = failed == 0;
+  out.status = complete ? Status::Converged : Status::Incomplete;
+  if (!complete)
+    out.message = fmt::format("{} evaluation{} found no puncture point (see the warnings)",
+                              failed,
+                              failed == 1 ? "" : "s");
 
   // The corners the documented directions give for the least and the largest force.
   bool consistent = complete;

@@ -288,15 +288,15 @@ UniaxialFit fit_uniaxial(const std::vector<UniaxialPoint>& points, FitLaw law,
   lm.parameters.xtol = 1e-12;
   lm.parameters.ftol = 1e-14;
   Eigen::VectorXd x = start(d, law);
-  const auto status = lm.minimize(x);
+  const auto lm_status = lm.minimize(x);
 
   UniaxialFit fit;
   fit.law = law;
   fit.points = static_cast<int>(points.size());
   fit.iterations = static_cast<int>(lm.iter);
-  fit.converged = converged(status) && x.allFinite();
-  fit.message = status_text(status);
-  if (!fit.converged) {
+  fit.status = converged(lm_status) && x.allFinite() ? Status::Converged : Status::NoConvergence;
+  fit.message = status_text(lm_status);
+  if (!fit.ok()) {
     if (fit.message.empty()) fit.message = "Levenberg-Marquardt did not converge";
     return fit;
   }

@@ -8,13 +8,12 @@
 #include <string>
 
 #include "fe/meridian_mesh.hpp"
+#include "puncture/outcome.hpp"
 
 namespace puncture::fe {
 
-struct NewtonResult {
-  bool converged = false;
+struct NewtonResult : Outcome {
   int iterations = 0;
-  std::string message;
   Assembly assembly;  // at the final state
 };
 
@@ -37,7 +36,7 @@ inline NewtonResult minimise_energy(const MaterialLaw& law, const Mesh& mesh, Ei
       return result;
     }
     if (mesh.unknowns == 0) {
-      result.converged = true;
+      result.status = Status::Converged;
       return result;
     }
     // Newton step, with a diagonal shift until LDL^T has a positive diagonal (a descent step).
@@ -68,7 +67,7 @@ inline NewtonResult minimise_energy(const MaterialLaw& law, const Mesh& mesh, Ei
     if (shift == 0.0 && (max_step < step_tol || -slope < decrement_tol * std::max(1.0, a.energy))) {
       x += step;
       result.assembly = assemble(law, mesh, x);
-      result.converged = result.assembly.admissible;
+      result.status = result.assembly.admissible ? Status::Converged : Status::NoConvergence;
       return result;
     }
     // Backtracking line search on the energy (Armijo).

@@ -197,9 +197,7 @@ Eigen::VectorXd starting_guess(const Mesh& mesh, const Scaled& s, const FeState*
   return x;
 }
 
-struct StepResult {
-  bool converged = false;
-  std::string message;
+struct StepResult : Outcome {
   FeState state;
 };
 
@@ -209,12 +207,12 @@ StepResult minimise(const Problem& problem, const Mesh& mesh, const Scaled& s, E
   const fe::NewtonResult newton =
       fe::minimise_energy(problem.material.law, mesh, x, options.max_newton_iterations);
   StepResult step;
-  step.converged = newton.converged;
+  step.status = newton.status;
   step.message = newton.message;
-  if (newton.converged) {
+  if (newton.ok()) {
     step.state = make_state(problem, mesh, x, newton.assembly, s, contact);
     step.state.newton_iterations = newton.iterations;
-    step.state.converged = true;
+    step.state.status = Status::Converged;
   }
   return step;
 }
@@ -252,7 +250,7 @@ StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState&
     const Mesh mesh = build_mesh(Layout::SlipWithSide, s, options, length);
     Eigen::VectorXd trial = x;
     last = minimise(problem, mesh, s, trial, contact, options);
-    if (!last.converged) throw std::runtime_error(last.message);
+    if (!last.ok()) throw std::runtime_error(last.message);
     x = trial;
     return corner_radial_slope(last.state);
   };
@@ -320,26 +318,26 @@ StepResult solve_step_in_layout(const Problem& problem, Layout& layout, const Sc
                                 const FeOptions& options, bool precise) {
   if (layout == Layout::Held) {
     StepResult step = solve_layout(problem, layout, s, previous, contact, options);
-    if (step.converged && corner_radial_slope(step.state) < 0.0) {
-      step.converged = false;
+    if (step.ok() && corner_radial_slope(step.state) < 0.0) {
+      step.status = Status::StickWrapsSide;
       step.message = "the held membrane would wrap the indenter's side (outside the stick model)";
     }
     return step;
   }
   if (layout == Layout::SlipWithoutSide) {
     StepResult step = solve_layout(problem, layout, s, previous, contact, options);
-    if (!step.converged || corner_radial_slope(step.state) >= 0.0) return step;
+    if (!step.ok() || corner_radial_slope(step.state) >= 0.0) return step;
     // Started from the last state outside the indenter: the one just found crosses the side.
     StepResult wrapped =
         solve_wrapped(problem, s, previous ? *previous : step.state, contact, options, precise);
-    if (wrapped.converged) layout = Layout::SlipWithSide;
+    if (wrapped.ok()) layout = Layout::SlipWithSide;
     return wrapped;
   }
   StepResult wrapped = solve_wrapped(problem, s, *previous, contact, options, precise);
-  if (wrapped.converged) return wrapped;
+  if (wrapped.ok()) return wrapped;
   // The side contact may have shrunk to nothing: try without it.
   StepResult plain = solve_layout(problem, Layout::SlipWithoutSide, s, previous, contact, options);
-  if (plain.converged && corner_radial_slope(plain.state) >= 0.0) {
+  if (plain.ok() && corner_radial_slope(plain.state) >= 0.0) {
     layout = Layout::SlipWithoutSide;
     return plain;
   }
@@ -360,8 +358,8 @@ StepResult solve_step(const Problem& problem, Layout& layout, const Scaled& s,
                       const FeState* previous, FeContact contact, const FeOptions& options,
                       bool precise) {
   StepResult step = solve_step_in_layout(problem, layout, s, previous, contact, options, precise);
-  if (step.converged && crosses_side(step.state, radius_mm(problem.indenter))) {
-    step.converged = false;
+  if (step.ok() && crosses_side(step.state, radius_mm(problem.indenter))) {
+    step.status = Status::NoConvergence;
     step.message =
         "the free membrane crosses the indenter's side (too few elements for this state?)";
   }
@@ -411,7 +409,7 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
       if (target - s.depth < 1e-3 * step) s.depth = target;  // no sliver of a last step
       StepResult result = solve_step(
           problem, layout, s, previous ? &*previous : nullptr, contact, options, s.depth == target);
-      if (result.converged) {
+      if (result.ok()) {
         depth = s.depth;
         previous = std::move(result.state);
         step = std::min(2.0 * step, options.max_depth_step);

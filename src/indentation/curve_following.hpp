@@ -165,7 +165,7 @@ LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
   out.puncture = find_puncture(p, options, shooting, switch_point, puncture_at_switch);
   double end_depth = curve.max_depth_mm;
   if (end_depth <= 0.0) {
-    if (!out.puncture.found) {
+    if (!out.puncture.ok()) {
       out.status = Status::NoConvergence;
       out.message = "cannot end the curve at puncture: " + out.puncture.message;
       return out;

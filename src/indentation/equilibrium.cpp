@@ -1,5 +1,7 @@
 #include "puncture/equilibrium.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -58,23 +60,12 @@ std::optional<ScaledSolution> direct_puncture(const Problem& problem,
 
 }  // namespace detail
 
-namespace {
-
-Equilibrium invalid(std::string message) {
-  Equilibrium e;
-  e.status = Status::InvalidInput;
-  e.message = std::move(message);
-  return e;
-}
-
-}  // namespace
-
 Equilibrium solve_at_force(const Problem& problem, double force_n, Stage stage,
                            const SolverOptions& options) {
-  if (const auto errors = validation_errors(problem); !errors.empty())
-    return invalid(errors.front().message);
+  validate(problem);
   if (!std::isfinite(force_n) || force_n < 0.0)
-    return invalid("force must be a finite number >= 0 N, got " + std::to_string(force_n));
+    throw InvalidInput("force_n",
+                       fmt::format("force must be a finite number >= 0 N, got {}", force_n));
   const double f = force_n / force_scale_n(problem);
   return detail::reporting_failures<Equilibrium>([&] {
     return detail::with_shooting(problem, options, [&](const auto& shooting) {
@@ -86,10 +77,10 @@ Equilibrium solve_at_force(const Problem& problem, double force_n, Stage stage,
 
 Equilibrium solve_at_depth(const Problem& problem, double depth_mm, Stage stage,
                            const SolverOptions& options) {
-  if (const auto errors = validation_errors(problem); !errors.empty())
-    return invalid(errors.front().message);
+  validate(problem);
   if (!std::isfinite(depth_mm) || depth_mm < 0.0)
-    return invalid("depth must be a finite number >= 0 mm, got " + std::to_string(depth_mm));
+    throw InvalidInput("depth_mm",
+                       fmt::format("depth must be a finite number >= 0 mm, got {}", depth_mm));
   const double d = depth_mm / problem.geometry.clamp_radius_mm;
   return detail::reporting_failures<Equilibrium>([&] {
     return detail::with_shooting(problem, options, [&](const auto& shooting) {

@@ -22,13 +22,8 @@ SolverOptions without_fields(SolverOptions o) {
 }  // namespace
 
 StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options) {
+  validate(p);
   return detail::reporting_failures<StageBoundary>([&] {
-    StageBoundary b;
-    if (const auto errors = validation_errors(p); !errors.empty()) {
-      b.status = Status::InvalidInput;
-      b.message = errors.front().message;
-      return b;
-    }
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       return detail::locate_switch(p, shooting).boundary;
     });
@@ -36,12 +31,8 @@ StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options
 }
 
 PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& options) {
+  validate(p);
   return detail::reporting_failures<PuncturePrediction>([&] {
-    PuncturePrediction out;
-    if (const auto errors = validation_errors(p); !errors.empty()) {
-      out.message = errors.front().message;
-      return out;
-    }
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       bool at_switch = false;
       return detail::find_puncture(
@@ -52,18 +43,11 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
 
 LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
                            const SolverOptions& options) {
+  validate(p);
+  if (curve.points < 2)
+    throw InvalidInput("points",
+                       fmt::format("the curve needs at least 2 points, got {}", curve.points));
   return detail::reporting_failures<LoadingCurve>([&] {
-    LoadingCurve out;
-    if (const auto errors = validation_errors(p); !errors.empty()) {
-      out.status = Status::InvalidInput;
-      out.message = errors.front().message;
-      return out;
-    }
-    if (curve.points < 2) {
-      out.status = Status::InvalidInput;
-      out.message = fmt::format("the curve needs at least 2 points, got {}", curve.points);
-      return out;
-    }
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       return detail::curve_to_puncture(p, shooting, curve, options);
     });

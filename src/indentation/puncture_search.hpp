@@ -44,6 +44,7 @@ template <class Shooting>
 SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
   SwitchPoint out;
   StageBoundary& b = out.boundary;
+  b.status = Status::Converged;  // unless the stick stage cannot reach its switch point
   const double scale = force_scale_n(p);
   const double big_a = p.geometry.clamp_radius_mm;
   switch (p.stick.rule) {
@@ -98,7 +99,8 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   const double big_a = p.geometry.clamp_radius_mm;
   const FailureCriterion criterion = failure_criterion(p);
   const StageBoundary& boundary = switch_point.boundary;
-  if (boundary.status != Status::Converged) {
+  if (!boundary.ok()) {
+    out.status = boundary.status;
     out.message = boundary.message;
     return out;
   }
@@ -167,6 +169,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   if (const double reached = measure(criterion, sol);
       !at_switch && reached < critical * (1.0 - 1e-6)) {
     const auto beyond = shooting.solve(stage, *f_puncture * (1.0 + 1e-9));
+    out.status = Status::NotReached;
     out.message = fmt::format(
         "no puncture found: in the {} stage the largest {} reaches only {:.8g} (critical {:g}) "
         "at {:.6g} N, where the solutions end{}",
@@ -179,7 +182,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
     return out;
   }
 
-  out.found = true;
+  out.status = Status::Converged;
   out.state = to_physical(p, shooting.contact(), sol, stage, options);
   out.force_n = out.state.force_n;
   out.normalized_force = sol.f;

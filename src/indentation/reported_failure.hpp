@@ -11,30 +11,14 @@
 
 namespace puncture::detail {
 
-inline void mark_failed(Equilibrium& r, std::string message) {
-  r.status = Status::NoConvergence;
-  r.message = std::move(message);
-}
-inline void mark_failed(StageBoundary& r, std::string message) {
-  r.status = Status::NoConvergence;
-  r.message = std::move(message);
-}
-inline void mark_failed(LoadingCurve& r, std::string message) {
-  r.status = Status::NoConvergence;
-  r.message = std::move(message);
-}
-inline void mark_failed(PuncturePrediction& r, std::string message) {
-  r.found = false;
-  r.message = std::move(message);
-}
-
 template <class Result, class Body>
 Result reporting_failures(Body&& body) {
   try {
     return body();
   } catch (const std::exception& e) {
     Result r;
-    mark_failed(r, std::string("numerical failure inside the solver: ") + e.what());
+    r.status = Status::NoConvergence;
+    r.message = std::string("numerical failure inside the solver: ") + e.what();
     return r;
   }
 }

@@ -19,7 +19,7 @@ std::string brief_report(const Equilibrium& e) {
 }
 
 std::string brief_report(const PuncturePrediction& p) {
-  if (!p.found) return "not found: " + p.message;
+  if (!p.ok()) return "not found: " + p.message;
   return fmt::format("force {:.6g} N, depth {:.6g} mm, Part III stretch {:.6g}, crack at {}",
                      p.force_n,
                      p.depth_mm,
@@ -33,8 +33,8 @@ std::string brief_report(const LoadingCurve& c) {
                      to_string(c.status),
                      c.points.size(),
                      c.points.empty() ? 0.0 : c.points.back().depth_mm,
-                     c.puncture.found ? fmt::format("puncture at {:.6g} N", c.puncture.force_n)
-                                      : std::string("no puncture"));
+                     c.puncture.ok() ? fmt::format("puncture at {:.6g} N", c.puncture.force_n)
+                                     : std::string("no puncture"));
 }
 
 }  // namespace puncture

@@ -34,7 +34,7 @@ InflationAtPressure inflate_at_pressure(const InflationProblem& problem, double 
     out.max_pole_stretch = range.max_pole_stretch;
   } else {
     const auto burst = inflation_burst(problem, options);
-    if (!burst.found) {
+    if (!burst.ok()) {
       out.status = burst.state.ok() ? Status::NoConvergence : burst.state.status;
       out.message = "the search range ends at the burst, which was not found: " + burst.message;
       return out;

@@ -82,8 +82,8 @@ InflationBurst inflation_burst(const InflationProblem& problem, const SolverOpti
     at = 0.5 * (bracket.first + bracket.second);
   }
   out.state = detail::to_physical(problem, detail::solve_inflation(law, at, options, guess));
-  out.found = out.state.ok();
-  if (!out.found) out.message = "the burst state could not be solved: " + out.state.message;
+  out.status = out.state.status;
+  if (!out.ok()) out.message = "the burst state could not be solved: " + out.state.message;
   return out;
 }
 

@@ -14,7 +14,7 @@ InflationCurve inflation_curve(const InflationProblem& problem, const InflationC
   out.burst = inflation_burst(problem, options);
   if (curve.max_pole_stretch > 0.0) {
     out.end_pole_stretch = curve.max_pole_stretch;
-  } else if (out.burst.found) {
+  } else if (out.burst.ok()) {
     out.end_pole_stretch = out.burst.state.pole_stretch;
   } else {
     out.status = out.burst.state.ok() ? Status::NoConvergence : out.burst.state.status;

@@ -37,7 +37,7 @@ Problem limit_problem(const Problem& problem, FeContact contact) {
 // How deep the limit goes: its predicted puncture, or the end of its loading curve.
 std::optional<double> depth_range(const Problem& q, std::string& why) {
   const PuncturePrediction puncture = predict_puncture(q);
-  if (puncture.found) return puncture.depth_mm;
+  if (puncture.ok()) return puncture.depth_mm;
   const LoadingCurve curve = loading_curve(q);
   if (!curve.points.empty() && curve.points.back().depth_mm > 0.0) {
     why = fmt::format("no puncture ({}); up to the end of the loading curve", puncture.message);
@@ -131,14 +131,14 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
       checks.rows.push_back(skipped(group, "force [N]", where, "shooting: " + e.message));
       continue;
     }
-    if (!fe[k].converged || !fe_coarse[k].converged) {
+    if (!fe[k].ok() || !fe_coarse[k].ok()) {
       // The shooting found an equilibrium the second method cannot reach: a disagreement.
       VerificationCheck c =
           skipped(group,
                   "force [N]",
                   where,
                   "no finite-element equilibrium here, where the shooting has one: " +
-                      (fe[k].converged ? fe_coarse[k].message : fe[k].message));
+                      (fe[k].ok() ? fe_coarse[k].message : fe[k].message));
       c.verdict = Verdict::Fail;
       c.shooting = e.force_n;
       c.reference = std::numeric_limits<double>::quiet_NaN();
@@ -183,7 +183,7 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
   const FeState& last = fe.back();
   const FeState& last_coarse = fe_coarse.back();
   const std::string where = fmt::format("0 to {:.5g} mm", depths.back());
-  if (!last.converged || !last_coarse.converged) return;
+  if (!last.ok() || !last_coarse.ok()) return;
   checks.step(fmt::format("{}: work of the force", group));
   std::string failure;
   auto force = [&](double depth) {
@@ -284,14 +284,19 @@ VerificationReport verify(const Problem& problem, const VerifyOptions& options) 
   VerificationReport report;
   report.checks = std::move(checks.rows);
   report.elements = options.elements;
+  if (const int failed = report.count(Verdict::Fail); failed == 0) {
+    report.status = Status::Converged;
+  } else {
+    report.status = Status::ChecksFailed;
+    report.message =
+        fmt::format("{} of {} checks outside their tolerance", failed, report.checks.size());
+  }
   return report;
 }
 
 bool has_numbers(const VerificationCheck& c) {
   return c.verdict != Verdict::Skipped && std::isfinite(c.shooting) && std::isfinite(c.reference);
 }
-
-bool VerificationReport::passed() const { return count(Verdict::Fail) == 0; }
 
 int VerificationReport::count(Verdict verdict) const {
   int n = 0;

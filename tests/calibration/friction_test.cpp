@@ -45,23 +45,23 @@ TEST(FrictionFromHole, RecoversFrictionAtTheMeasuredForce) {
     const double ratio = stretch_at_force(p, mu, force);
     p.friction = 7.0;  // ignored: it is what is calibrated
     const auto e = friction_from_hole(p, {ratio, 0.0, force}, HoleMethod::AtMeasuredForce);
-    ASSERT_TRUE(e.friction.found) << e.friction.message;
+    ASSERT_TRUE(e.friction.ok()) << e.friction.message;
     EXPECT_NEAR(e.friction.value, mu, kRecoveryTol) << "indenter " << indenter;
     EXPECT_EQ(e.friction.solutions.size(), 1u);
     ASSERT_TRUE(e.max_first_invariant);
     EXPECT_GT(*e.stretch_at_zero_friction, ratio);
     EXPECT_LT(*e.stretch_at_max_friction, ratio);
-    EXPECT_FALSE(e.friction_for_ratio_plus_sd.found);  // no sd given
+    EXPECT_FALSE(e.friction_for_ratio_plus_sd.ok());  // no sd given
   }
 }
 
 TEST(FrictionFromHole, RecoversFrictionAtThePredictedPuncture) {
   Problem p = dry_small_indenter();
   const auto truth = predict_puncture(p, quiet());
-  ASSERT_TRUE(truth.found);
+  ASSERT_TRUE(truth.ok());
   const auto e = friction_from_hole(
       p, {truth.part_three_stretch, 0.0, std::nullopt}, HoleMethod::AtPredictedPuncture);
-  ASSERT_TRUE(e.friction.found) << e.friction.message;
+  ASSERT_TRUE(e.friction.ok()) << e.friction.message;
   EXPECT_NEAR(e.friction.value, 1.95, kRecoveryTol);
   ASSERT_TRUE(e.puncture_force_n);
   EXPECT_NEAR(*e.puncture_force_n, truth.force_n, 1e-6 * truth.force_n);
@@ -78,7 +78,7 @@ TEST(FrictionFromHole, AtPunctureTheEstimateDoesNotDependOnTheIndenter) {
   const HoleMeasurement hole{1.58, 0.0, std::nullopt};
   const auto a = friction_from_hole(small, hole, HoleMethod::AtPredictedPuncture);
   const auto b = friction_from_hole(large, hole, HoleMethod::AtPredictedPuncture);
-  ASSERT_TRUE(a.friction.found && b.friction.found);
+  ASSERT_TRUE(a.friction.ok() && b.friction.ok());
   EXPECT_NEAR(a.friction.value, b.friction.value, kRecoveryTol);
   EXPECT_GT(*b.puncture_force_n, 2.5 * *a.puncture_force_n);  // the force does depend on it
 }
@@ -94,7 +94,7 @@ TEST(FrictionFromHole, NoisyRatiosMoveTheEstimateTheRightWayAndStayInTheInterval
     const double dn = noise();
     ASSERT_LT(std::abs(dn), sd);  // the premise of the interval check below
     const auto e = friction_from_hole(p, {exact + dn, sd, force}, HoleMethod::AtMeasuredForce);
-    ASSERT_TRUE(e.friction.found) << e.friction.message;
+    ASSERT_TRUE(e.friction.ok()) << e.friction.message;
     // The stretch falls as the friction grows: a larger ratio means less friction.
     if (dn > 0)
       EXPECT_LT(e.friction.value, mu);
@@ -102,7 +102,7 @@ TEST(FrictionFromHole, NoisyRatiosMoveTheEstimateTheRightWayAndStayInTheInterval
       EXPECT_GT(e.friction.value, mu);
     // The estimate reproduces the noisy ratio it was given.
     EXPECT_NEAR(stretch_at_force(p, e.friction.value, force), exact + dn, 1e-7);
-    ASSERT_TRUE(e.friction_for_ratio_plus_sd.found && e.friction_for_ratio_minus_sd.found);
+    ASSERT_TRUE(e.friction_for_ratio_plus_sd.ok() && e.friction_for_ratio_minus_sd.ok());
     EXPECT_LT(e.friction_for_ratio_plus_sd.value, mu);
     EXPECT_GT(e.friction_for_ratio_minus_sd.value, mu);
   }
@@ -113,25 +113,25 @@ TEST(FrictionFromHole, ReportsRatiosOutOfReach) {
   const double force = 1.5;
   // Too large: more stretch than even frictionless sliding gives at this force.
   const auto big = friction_from_hole(p, {9.0, 0.0, force}, HoleMethod::AtMeasuredForce);
-  EXPECT_FALSE(big.friction.found);
+  EXPECT_FALSE(big.friction.ok());
   EXPECT_TRUE(big.friction.solutions.empty());
   EXPECT_NE(big.friction.message.find("largest attainable"), std::string::npos)
       << big.friction.message;
   EXPECT_LT(*big.stretch_at_zero_friction, 9.0);
   // Too small: no sliding at all would need mu' beyond the model's limit.
   const auto one = friction_from_hole(p, {1.0, 0.0, force}, HoleMethod::AtMeasuredForce);
-  EXPECT_FALSE(one.friction.found);
+  EXPECT_FALSE(one.friction.ok());
   EXPECT_NE(one.friction.message.find("smallest attainable"), std::string::npos)
       << one.friction.message;
   // At puncture, frictionless sliding gives at most 6.899 (I1c = 95.2).
   const auto punct =
       friction_from_hole(p, {7.5, 0.0, std::nullopt}, HoleMethod::AtPredictedPuncture);
-  EXPECT_FALSE(punct.friction.found);
+  EXPECT_FALSE(punct.friction.ok());
   // One end of the interval out of reach, the value itself not.
   const auto wide = friction_from_hole(p, {1.3, 0.5, force}, HoleMethod::AtMeasuredForce);
-  EXPECT_TRUE(wide.friction.found);
-  EXPECT_TRUE(wide.friction_for_ratio_plus_sd.found);
-  EXPECT_FALSE(wide.friction_for_ratio_minus_sd.found);
+  EXPECT_TRUE(wide.friction.ok());
+  EXPECT_TRUE(wide.friction_for_ratio_plus_sd.ok());
+  EXPECT_FALSE(wide.friction_for_ratio_minus_sd.ok());
   EXPECT_NE(wide.friction_for_ratio_minus_sd.message.find("0.8"), std::string::npos);
 }
 

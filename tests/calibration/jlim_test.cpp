@@ -21,7 +21,7 @@ SolverOptions quiet() {
 double puncture_force(Problem p, double j_lim) {
   p.material.law = Gent{j_lim};
   const auto punct = predict_puncture(p, quiet());
-  EXPECT_TRUE(punct.found) << punct.message;
+  EXPECT_TRUE(punct.ok()) << punct.message;
   return punct.force_n;
 }
 
@@ -39,10 +39,10 @@ TEST(JLimFromPunctureForce, RecoversJLim) {
        {std::pair{lubricated, 110.0}, std::pair{dry, 125.0}, std::pair{lubricated, 400.0}}) {
     const double force = puncture_force(problem, j_lim);
     const auto e = jlim_from_puncture_force(problem, force);
-    ASSERT_TRUE(e.j_lim.found) << e.j_lim.message;
+    ASSERT_TRUE(e.j_lim.ok()) << e.j_lim.message;
     EXPECT_NEAR(e.j_lim.value, j_lim, kRecoveryTol * j_lim);
     EXPECT_EQ(e.j_lim.solutions.size(), 1u);
-    ASSERT_TRUE(e.puncture.found);
+    ASSERT_TRUE(e.puncture.ok());
     EXPECT_NEAR(e.puncture.force_n, force, 1e-8 * force);
     // The paper's equivalent check: at that force the largest I1 is the critical one.
     ASSERT_TRUE(e.max_first_invariant_at_force);
@@ -62,7 +62,7 @@ TEST(JLimFromPunctureForce, NoisyForcesMoveJLimTheRightWay) {
   for (int draw = 0; draw < 3; ++draw) {
     const double force = exact * (1.0 + noise());
     const auto e = jlim_from_puncture_force(p, force, coarse);
-    ASSERT_TRUE(e.j_lim.found) << e.j_lim.message;
+    ASSERT_TRUE(e.j_lim.ok()) << e.j_lim.message;
     // The predicted force falls as J_lim grows.
     if (force > exact)
       EXPECT_LT(e.j_lim.value, j_true);
@@ -78,19 +78,19 @@ TEST(JLimFromPunctureForce, ReportsForcesOutOfReach) {
   coarse.points_per_decade = 2;
   // Below the neo-Hookean force (J_lim -> infinity), 0.231 N for the default membrane.
   const auto low = jlim_from_puncture_force(p, 0.2, coarse);
-  EXPECT_FALSE(low.j_lim.found);
+  EXPECT_FALSE(low.j_lim.ok());
   EXPECT_TRUE(low.j_lim.solutions.empty());
   EXPECT_NE(low.j_lim.message.find("neo-Hookean"), std::string::npos) << low.j_lim.message;
   EXPECT_NEAR(low.neo_hookean_force_n, 0.231, 0.001);
   // Above what any J_lim above critical I1 - 3 gives.
   const auto high = jlim_from_puncture_force(p, 1e7, coarse);
-  EXPECT_FALSE(high.j_lim.found);
+  EXPECT_FALSE(high.j_lim.ok());
   EXPECT_NE(high.j_lim.message.find("above"), std::string::npos) << high.j_lim.message;
   // Above the neo-Hookean force but beyond the J_lim searched.
   JLimOptions short_scan = coarse;
   short_scan.max_gap = 10.0;  // J_lim up to 11 (I1c - 3) = 1014
   const auto beyond = jlim_from_puncture_force(p, 0.235, short_scan);
-  EXPECT_FALSE(beyond.j_lim.found);
+  EXPECT_FALSE(beyond.j_lim.ok());
   EXPECT_NE(beyond.j_lim.message.find("larger still"), std::string::npos) << beyond.j_lim.message;
 }
 

@@ -24,7 +24,7 @@ SolverOptions quiet() {
 
 PuncturePrediction solve(const Problem& p) {
   const auto punct = predict_puncture(p, quiet());
-  EXPECT_TRUE(punct.found) << punct.message;
+  EXPECT_TRUE(punct.ok()) << punct.message;
   return punct;
 }
 
@@ -75,8 +75,8 @@ constexpr double kSameSolve = 1e-12;
 TEST(PunctureBand, ContainsTheNominalPrediction) {
   const Problem p;
   const auto band = puncture_band(p, paper_ranges());
-  ASSERT_TRUE(band.complete) << band.warnings.front();
-  ASSERT_TRUE(band.nominal.found);
+  ASSERT_TRUE(band.ok()) << band.warnings.front();
+  ASSERT_TRUE(band.nominal.ok());
   EXPECT_NEAR(band.nominal.force_n, solve(p).force_n, kSameSolve * band.nominal.force_n);
   ASSERT_EQ(band.corners.size(), 16u);
   ASSERT_TRUE(band.force_min_corner && band.force_max_corner);
@@ -100,7 +100,7 @@ TEST(PunctureBand, CollapsesWithZeroWidths) {
   r.j_lim = plus_minus(125.0, 0.0);
   r.shear_modulus_mpa = plus_minus(p.material.shear_modulus_mpa, 0.0);
   const auto band = puncture_band(p, r);
-  ASSERT_TRUE(band.complete);
+  ASSERT_TRUE(band.ok());
   // Every corner is the nominal problem: the deterministic solver gives the same numbers.
   for (const auto& c : band.corners) {
     EXPECT_EQ(c.force_n, band.nominal.force_n);
@@ -261,14 +261,14 @@ TEST(PunctureBand, ReportsSolverFailures) {
   BandRanges r;
   r.friction = plus_minus(0.18, 0.05);
   const auto band = puncture_band(Problem{}, r, starved);
-  EXPECT_FALSE(band.complete);
-  EXPECT_FALSE(band.nominal.found);
+  EXPECT_FALSE(band.ok());
+  EXPECT_FALSE(band.nominal.ok());
   EXPECT_FALSE(band.nominal.message.empty());
   EXPECT_FALSE(band.force_min_n);
   EXPECT_FALSE(band.consistent_with_documented_directions);
   // The nominal point, the 4 other samples along the range and the 2 corners.
   EXPECT_EQ(band.warnings.size(), 7u);
-  for (const auto& c : band.corners) EXPECT_FALSE(c.found);
+  for (const auto& c : band.corners) EXPECT_FALSE(c.ok());
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ TEST_P(CriticalI1AtPuncture, HasJustFailedWhereTheFieldsPeak) {
   p.indenter = FlatPunch{c.indenter_radius_mm};
   p.stick.rule = c.stick;
   const auto puncture = predict_puncture(p);
-  ASSERT_TRUE(puncture.found) << puncture.message;
+  ASSERT_TRUE(puncture.ok()) << puncture.message;
 
   const FailureCriterion criterion = failure_criterion(p);
   EXPECT_EQ(describe(criterion), "critical I1 = 95.2");

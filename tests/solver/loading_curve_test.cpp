@@ -47,7 +47,7 @@ class Curve : public ::testing::TestWithParam<CurveCase> {
   void SetUp() override {
     curve_ = loading_curve(GetParam().problem);
     ASSERT_TRUE(curve_.ok()) << curve_.message;
-    ASSERT_TRUE(curve_.puncture.found) << curve_.puncture.message;
+    ASSERT_TRUE(curve_.puncture.ok()) << curve_.puncture.message;
     ASSERT_GE(curve_.points.size(), 200u);
   }
   LoadingCurve curve_;
@@ -234,7 +234,7 @@ TEST_P(PunctureAtSwitch, CurveEndsWithTheSwitchAndReportsIt) {
 
   const auto curve = loading_curve(p, {.points = 20});
   ASSERT_TRUE(curve.ok()) << curve.message;
-  ASSERT_TRUE(curve.puncture.found) << curve.puncture.message;
+  ASSERT_TRUE(curve.puncture.ok()) << curve.puncture.message;
   EXPECT_EQ(curve.puncture.stage, Stage::Slip);
   EXPECT_NEAR(curve.puncture.depth_mm, boundary.depth_mm, 1e-9 * boundary.depth_mm);
   EXPECT_NEAR(curve.puncture.force_n, sliding.force_n, 1e-8 * sliding.force_n);

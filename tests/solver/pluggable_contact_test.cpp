@@ -139,7 +139,7 @@ TEST(PluggableContact, BondedDiscGivesTheAlwaysHeldFlatPunch) {
 
   ASSERT_TRUE(disc.ok()) << disc.message;
   ASSERT_TRUE(punch.ok()) << punch.message;
-  ASSERT_TRUE(disc.puncture.found) << disc.puncture.message;
+  ASSERT_TRUE(disc.puncture.ok()) << disc.puncture.message;
   // Both puncture forces are roots of max I1 = I1c bracketed to a few ulps of the force; the
   // states there meet the clamp condition to the shooting tolerance (1e-10), which moves the
   // force by ~1e-10 relative: 1e-8 leaves a margin and would catch any difference of physics.

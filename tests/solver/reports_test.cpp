@@ -29,11 +29,16 @@ TEST(BriefReport, StatesTheResultsNumbersWithUnits) {
 }
 
 TEST(BriefReport, SaysWhyAResultFailed) {
-  Problem p = test::paper_problem();
-  p.friction = -1.0;
-  const auto state = solve_at_force(p, 0.3, Stage::Slip);
-  EXPECT_EQ(brief_report(state), "invalid input: " + state.message);
-  EXPECT_EQ(brief_report(predict_puncture(p)).rfind("not found: friction coefficient", 0), 0u);
+  // Gent with J_lim = 5 locks at I1 = 8: 50 N is far beyond what the membrane carries.
+  Problem p = test::paper_problem(Gent{5.0});
+  p.critical_i1 = 7.0;  // below the locking I1, else the problem is invalid
+  const auto state = solve_at_force(p, 50.0, Stage::Slip);
+  ASSERT_EQ(state.status, Status::BeyondLocking) << state.message;
+  EXPECT_EQ(brief_report(state), "beyond locking: " + state.message);
+  PuncturePrediction none;
+  none.status = Status::NotReached;
+  none.message = "I1 does not reach 20";
+  EXPECT_EQ(brief_report(none), "not found: I1 does not reach 20");
 }
 
 }  // namespace

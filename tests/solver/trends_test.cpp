@@ -24,7 +24,7 @@ TEST(Trends, PunctureForceRisesWithIndenterRadius) {
     Problem p = paper_problem();
     p.indenter = FlatPunch{a};
     const auto punct = predict_puncture(p);
-    ASSERT_TRUE(punct.found) << "a = " << a << " mm: " << punct.message;
+    ASSERT_TRUE(punct.ok()) << "a = " << a << " mm: " << punct.message;
     forces.push_back(punct.force_n);
   }
   double smallest_step = 1e300;
@@ -41,8 +41,8 @@ TEST(Trends, PunctureForceRisesWithIndenterRadius) {
 TEST(Trends, PunctureForceRisesWithFriction) {
   const auto lubricated = predict_puncture(paper_problem(Gent{125.0}, 0.18));
   const auto dry = predict_puncture(paper_problem(Gent{125.0}, 1.95));
-  ASSERT_TRUE(lubricated.found) << lubricated.message;
-  ASSERT_TRUE(dry.found) << dry.message;
+  ASSERT_TRUE(lubricated.ok()) << lubricated.message;
+  ASSERT_TRUE(dry.ok()) << dry.message;
   EXPECT_GT(dry.force_n, lubricated.force_n * (1.0 + kResolved));
   record("lubricated_force_n", lubricated.force_n);
   record("dry_force_n", dry.force_n);

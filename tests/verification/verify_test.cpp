@@ -29,7 +29,7 @@ TEST(Verify, PassesOnThePapersMembraneWithEveryCheck) {
   for (const auto& c : r.checks)
     EXPECT_EQ(c.verdict, Verdict::Pass) << c.group << " " << c.quantity << " " << c.condition
                                         << ": " << c.difference << " (" << c.note << ")";
-  EXPECT_TRUE(r.passed());
+  EXPECT_TRUE(r.ok());
   EXPECT_EQ(count_quantity(r, "frictionless", "force [N]"), 2);
   EXPECT_EQ(count_quantity(r, "frictionless", "Part III stretch"), 2);
   EXPECT_EQ(count_quantity(r, "held at the edge", "largest I1"), 2);
@@ -48,7 +48,7 @@ TEST(Verify, FailsForThePrintedPartTwoEquation) {
   options.elements = 32;
   options.depths = 4;
   const VerificationReport r = verify(p, options);
-  EXPECT_FALSE(r.passed());
+  EXPECT_FALSE(r.ok());
   bool force_failed = false;
   for (const auto& c : r.checks)
     if (c.group == "frictionless" && c.quantity == "force [N]" && c.verdict == Verdict::Fail &&

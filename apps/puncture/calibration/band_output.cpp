@@ -43,17 +43,17 @@ std::string evaluation_where(const BandEvaluation& e) {
 }
 
 std::vector<Cell> evaluation_row(const std::string& kind, const BandEvaluation& e) {
-  const auto if_found = [&](double x) { return e.found ? std::optional<double>(x) : std::nullopt; };
+  const auto if_found = [&](double x) { return e.ok() ? std::optional<double>(x) : std::nullopt; };
   return {kind,
           e.parameters.critical_i1,
           e.parameters.friction,
           e.parameters.j_lim,
           e.parameters.shear_modulus_mpa,
-          std::string(e.found ? "yes" : "no"),
+          std::string(e.ok() ? "yes" : "no"),
           if_found(e.force_n),
           if_found(e.depth_mm),
           if_found(e.part_three_stretch),
-          e.found ? std::string() : e.message};
+          e.ok() ? std::string() : e.message};
 }
 
 json evaluation_json(const BandEvaluation& e) {
@@ -61,7 +61,7 @@ json evaluation_json(const BandEvaluation& e) {
                      {"friction", finite(e.parameters.friction, "friction")},
                      {"j_lim", value_or_null(e.parameters.j_lim, "J_lim")},
                      {"shear_modulus_mpa", finite(e.parameters.shear_modulus_mpa, "G")}};
-  if (!e.found) return {{"parameters", parameters}, {"found", false}, {"message", e.message}};
+  if (!e.ok()) return {{"parameters", parameters}, {"found", false}, {"message", e.message}};
   return {{"parameters", parameters},
           {"found", true},
           {"force_n", finite(e.force_n, "puncture force")},
@@ -140,7 +140,7 @@ std::string summary(const BandReport& r) {
            "monotone"},
           {}};
   const auto if_found = [](const BandEvaluation& e, double x) {
-    return e.found ? std::optional<double>(x) : std::nullopt;
+    return e.ok() ? std::optional<double>(x) : std::nullopt;
   };
   for (const auto& s : b.sensitivities)
     t.rows.push_back({to_token(s.parameter),
@@ -249,7 +249,7 @@ std::string json_text(const BandReport& r) {
          {"depth_max_corner", index(b.depth_max_corner)},
          {"force_half_range_rss_n", value_or_null(b.force_half_range_rss_n, "force spread")},
          {"dominant", b.dominant ? json(to_token(*b.dominant)) : json(nullptr)},
-         {"complete", b.complete},
+         {"complete", b.ok()},
          {"consistent_with_documented_directions", b.consistent_with_documented_directions},
          {"warnings", b.warnings}}},
        {"sensitivities", sensitivities},

@@ -62,13 +62,13 @@ void problem_lines(std::string& out, const Problem& p, std::string_view calibrat
 }
 
 std::optional<double> value_of(const Inversion& i) {
-  return i.found ? std::optional<double>(i.value) : std::nullopt;
+  return i.ok() ? std::optional<double>(i.value) : std::nullopt;
 }
 
 json inversion_json(const Inversion& i, std::string_view what) {
   json solutions = json::array();
   for (const double s : i.solutions) solutions.push_back(finite(s, what));
-  return {{"found", i.found},
+  return {{"found", i.ok()},
           {"value", value_or_null(value_of(i), what)},
           {"solutions", solutions},
           {"message", i.message},
@@ -77,7 +77,7 @@ json inversion_json(const Inversion& i, std::string_view what) {
 
 // "1.9923", or "not found: <why>"; a warning on a found value is kept.
 std::string inversion_text(const Inversion& i, std::string_view what) {
-  if (!i.found) return "not found: " + i.message;
+  if (!i.ok()) return "not found: " + i.message;
   auto text = num(i.value, what);
   if (!i.message.empty()) text += " (" + i.message + ")";
   return text;

@@ -26,7 +26,7 @@ void friction_lines(std::string& out, const FrictionEstimate& e, const FrictionR
                    num_or(e.stretch_at_max_friction, "stretch at the largest friction"),
                    num(e.max_friction, "largest friction"),
                    num_or(e.stretch_at_zero_friction, "stretch without friction")));
-  if (!e.friction.found) return;
+  if (!e.friction.ok()) return;
   if (e.method == HoleMethod::AtMeasuredForce) {
     if (e.max_first_invariant)
       line(out,

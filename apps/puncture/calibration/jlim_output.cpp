@@ -18,7 +18,7 @@ json jlim_json(const JLimEstimate& e) {
     scan.push_back({{"j_lim", finite(s.parameter, "scan J_lim")},
                     {"puncture_force_n", value_or_null(s.model, "scan force")}});
   json puncture = nullptr;
-  if (e.puncture.found)
+  if (e.puncture.ok())
     puncture = {{"force_n", finite(e.puncture.force_n, "predicted puncture force")},
                 {"depth_mm", finite(e.puncture.depth_mm, "predicted puncture depth")},
                 {"part_three_stretch", finite(e.puncture.part_three_stretch, "Part III stretch")},
@@ -61,7 +61,7 @@ std::string summary(const JLimReport& r) {
   other("J_lim for critical I1 + sd", r.i1_plus_sd);
   other("J_lim for critical I1 - sd", r.i1_minus_sd);
   const auto& p = e.puncture;
-  if (p.found)
+  if (p.ok())
     line(out,
          "predicted puncture",
          fmt::format("{} N at depth {} mm, Part III stretch {}, crack: {}",
@@ -91,7 +91,7 @@ std::string csv_text(const JLimReport& r) {
     return x ? value_of(x->j_lim) : std::nullopt;
   };
   const auto& p = e.puncture;
-  const auto if_found = [&](double x) { return p.found ? std::optional<double>(x) : std::nullopt; };
+  const auto if_found = [&](double x) { return p.ok() ? std::optional<double>(x) : std::nullopt; };
   Table t{{"j_lim",
            "j_lim_force_plus_sd",
            "j_lim_force_minus_sd",

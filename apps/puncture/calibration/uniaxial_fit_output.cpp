@@ -135,7 +135,7 @@ std::string json_text(const UniaxialFitReport& r) {
       {{"inputs", {{"source", r.source}, {"points", r.data.size()}, {"specimen", specimen}}},
        {"fit",
         {{"law", to_string(f.law)},
-         {"converged", f.converged},
+         {"converged", f.ok()},
          {"iterations", f.iterations},
          {"parameters", parameters},
          {"inverse_j_lim", value_or_null(f.inverse_j_lim, "1/J_lim")},
