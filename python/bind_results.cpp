@@ -301,6 +301,25 @@ void bind_results(py::module_& m) {
                            b.depth_mm,
                            b.force_stuck_n);
       });
+
+  m.def("full_report",
+        py::overload_cast<const Problem&>(&full_report),
+        py::arg("problem"),
+        "The inputs with units, one per line (the CLI summary's 'Inputs' block)");
+  m.def("full_report",
+        py::overload_cast<const Equilibrium&, const Problem&>(&full_report),
+        py::arg("state"),
+        py::arg("problem"),
+        "The state's numbers with units, the largest I1 against the problem's critical I1");
+  m.def("full_report",
+        py::overload_cast<const PuncturePrediction&>(&full_report),
+        py::arg("puncture"),
+        "The puncture point with units and where the crack starts, or why there is none");
+  m.def("full_report",
+        py::overload_cast<const LoadingCurve&, const Problem&>(&full_report),
+        py::arg("curve"),
+        py::arg("problem"),
+        "The stick -> slip switch, where Part II appears and the puncture");
 }
 
 }  // namespace puncture::python

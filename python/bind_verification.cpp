@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "puncture/finite_element.hpp"
+#include "puncture/reports.hpp"
 #include "puncture/verification.hpp"
 
 namespace puncture::python {
@@ -148,7 +149,11 @@ void bind_verification(py::module_& m) {
       py::arg("depths") = 4,
       "The checks of `puncture verify` for this membrane: the finite elements at mu' = 0 and\n"
       "held, work = stored energy, and the Foppl limit.  A VerificationReport: .checks,\n"
-      ".passed.  Takes seconds.");
+      ".ok.  Takes seconds.");
+  m.def("full_report",
+        py::overload_cast<const VerificationReport&>(&full_report),
+        py::arg("report"),
+        "Every check with both values, the difference, the tolerance and the verdict");
 }
 
 }  // namespace puncture::python

@@ -54,25 +54,4 @@ std::string_view threshold_unit(StickRule rule) {
   return "";
 }
 
-std::string describe_stick(const StickCriterion& stick) {
-  switch (stick.rule) {
-    case StickRule::None:
-      return "none (Coulomb friction only: slides from the first touch)";
-    case StickRule::Always:
-      return "always (held at the edge, never slides)";
-    case StickRule::Force:
-      return fmt::format(
-          "force:{:g} (held until the force reaches {:g} N)", stick.threshold, stick.threshold);
-    case StickRule::Depth:
-      return fmt::format(
-          "depth:{:g} (held until the depth reaches {:g} mm)", stick.threshold, stick.threshold);
-    case StickRule::EdgeTension:
-      return fmt::format(
-          "edge-tension:{:g} (held until the line tension at the edge reaches {:g} N/mm)",
-          stick.threshold,
-          stick.threshold);
-  }
-  return "?";
-}
-
 }  // namespace puncture::cli

@@ -19,7 +19,4 @@ std::optional<StickCriterion> parse_stick(std::string_view text);
 // Unit of the rule's threshold: "N", "mm", "N/mm", or "" for none / always.
 std::string_view threshold_unit(StickRule rule);
 
-// The criterion in words, with its threshold and unit.
-std::string describe_stick(const StickCriterion& stick);
-
 }  // namespace puncture::cli

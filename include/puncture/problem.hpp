@@ -59,6 +59,8 @@ void validate(const Problem& problem);
 double force_scale_n(const Problem& problem);
 
 std::string to_string(StickRule rule);
+// The stick rule in words, e.g. "force:0.3 (held until the force reaches 0.3 N)".
+std::string describe(const StickCriterion& stick);
 std::string to_string(PartTwoEquation equation);
 
 }  // namespace puncture

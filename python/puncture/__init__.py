@@ -45,6 +45,8 @@ from ._puncture import (
     FitLaw,
     FittedParameter,
     FrictionEstimate,
+    Outcome,
+    full_report,
     Gent,
     FlatPunch,
     Geometry,
@@ -97,6 +99,8 @@ from ._puncture import (
 )
 
 __all__ = [
+    "Outcome",
+    "full_report",
     "BandEvaluation",
     "BandParameter",
     "BandParameters",

@@ -262,3 +262,15 @@ def test_reprs_are_the_library_reports():
     curve = pu.loading_curve(problem, points=5)
     assert repr(curve).startswith("<LoadingCurve converged: 5 points, depth 0 to ")
     assert curve.puncture.crack_location in repr(curve.puncture)
+
+
+def test_every_result_is_an_outcome_with_reports():
+    problem = pu.Problem()
+    state = pu.solve_at_force(problem, 0.3, stage="slip")
+    assert isinstance(state, pu.Outcome) and state.ok
+    assert state.status == pu.Status.Converged
+    assert "  clamp radius A          25 mm\n" in pu.full_report(problem)
+    assert f"depth                   {state.depth_mm:.5g} mm" in pu.full_report(state, problem)
+    prediction = pu.predict_puncture(problem)
+    assert isinstance(prediction, pu.Outcome) and prediction.ok
+    assert prediction.crack_location in pu.full_report(prediction)

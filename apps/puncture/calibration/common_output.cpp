@@ -57,7 +57,7 @@ void problem_lines(std::string& out, const Problem& p, std::string_view calibrat
   line(out, "thickness H", num(g.thickness_mm, "thickness") + " mm");
   line(out, "material", material_without(p.material, calibrated == "jlim"));
   if (calibrated != "friction") line(out, "friction mu'", num(p.friction, "friction"));
-  line(out, "stick criterion", describe_stick(p.stick));
+  line(out, "stick criterion", describe(p.stick));
   line(out, "Part II equation", to_string(p.part_two_equation));
 }
 

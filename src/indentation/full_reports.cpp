@@ -1,0 +1,139 @@
+// The full reports of the indentation results (puncture/reports.hpp).
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <string_view>
+
+#include "puncture/reports.hpp"
+
+namespace puncture {
+
+namespace {
+
+// Five significant digits; "n/a" for a number that is not finite (no report shows NaN).
+std::string num(double x) { return std::isfinite(x) ? fmt::format("{:.5g}", x) : "n/a"; }
+
+void line(std::string& out, std::string_view label, std::string_view value) {
+  out += fmt::format("  {:<24}{}\n", label, value);
+}
+
+std::string failure(const Outcome& o) { return fmt::format("  {}: {}\n", to_string(o.status), o.message); }
+
+std::string switch_text(const LoadingCurve& c, const Problem& p) {
+  if (c.stick_slip.occurs)
+    return fmt::format("at depth {} mm: force {} N (held) -> {} N (sliding)",
+                       num(c.stick_slip.depth_mm),
+                       num(c.stick_slip.force_stuck_n),
+                       num(c.stick_slip.force_sliding_n));
+  if (p.stick.rule == StickRule::None) return "none: slides from the first touch";
+  if (p.stick.rule == StickRule::Always) return "none: held throughout";
+  return "none: still held at the end of the curve";
+}
+
+std::string part_two_text(const LoadingCurve& c, const Problem& p) {
+  if (!c.part_two_onset_depth_mm || !c.part_two_onset_force_n)
+    return p.stick.rule == StickRule::Always ? "never (the membrane is held)" : "not found";
+  const double end = c.points.empty() ? 0.0 : c.points.back().depth_mm;
+  const auto text = fmt::format("at depth {} mm, force {} N{}",
+                                num(*c.part_two_onset_depth_mm),
+                                num(*c.part_two_onset_force_n),
+                                c.part_two_onset_at_switch
+                                    ? ", on sliding at the stick -> slip switch"
+                                    : "");
+  return *c.part_two_onset_depth_mm > end ? text + ", beyond the end of the curve" : text;
+}
+
+}  // namespace
+
+std::string full_report(const Problem& p) {
+  const auto& g = p.geometry;
+  std::string out = "Inputs\n";
+  line(out, "clamp radius A", num(g.clamp_radius_mm) + " mm");
+  line(out, "indenter", describe(p.indenter));
+  line(out, "thickness H", num(g.thickness_mm) + " mm");
+  line(out, "material", describe(p.material));
+  line(out, "friction mu'", num(p.friction));
+  line(out, "critical I1", num(p.critical_i1));
+  line(out, "stick criterion", describe(p.stick));
+  line(out, "Part II equation", to_string(p.part_two_equation));
+  line(out,
+       "force scale 2 pi G H A",
+       num(force_scale_n(p)) + " N (normalised force = F / this)");
+  return out;
+}
+
+std::string full_report(const Equilibrium& e, const Problem& p) {
+  if (!e.ok()) return failure(e);
+  std::string out;
+  line(out, "configuration", to_string(e.configuration));
+  line(out,
+       "force",
+       fmt::format("{} N (F / 2 pi G H A = {})", num(e.force_n), num(e.normalized_force)));
+  line(out, "depth", num(e.depth_mm) + " mm");
+  line(out, "Part III stretch", num(e.part_three_stretch));
+  line(out, "corner at reference R", num(e.corner_reference_radius_mm) + " mm");
+  if (e.configuration == Configuration::SlipWithPartTwo)
+    line(out,
+         "Part II",
+         fmt::format("length {} mm, top at reference R = {} mm",
+                     num(e.part_two_length_mm),
+                     num(e.part_two_top_reference_radius_mm)));
+  line(out,
+       "corner slope",
+       fmt::format("{} rad ({} deg)",
+                   num(e.corner_slope_rad),
+                   num(e.corner_slope_rad * 180.0 / std::numbers::pi)));
+  line(out,
+       "corner tension ratio",
+       std::isinf(e.corner_tension_ratio) ? "n/a (the membrane is held at the edge)"
+                                          : num(e.corner_tension_ratio));
+  line(out,
+       "largest I1",
+       fmt::format("{} at reference R = {} mm ({} the critical {})",
+                   num(e.max_first_invariant),
+                   num(e.max_first_invariant_reference_radius_mm),
+                   e.max_first_invariant >= p.critical_i1 ? "at or beyond" : "below",
+                   num(p.critical_i1)));
+  line(out,
+       "clamp residual",
+       std::isfinite(e.clamp_residual) ? fmt::format("{:.3g}", e.clamp_residual) : "n/a");
+  return out;
+}
+
+std::string full_report(const PuncturePrediction& p) {
+  std::string out = "Puncture\n";
+  if (!p.ok()) {
+    line(out, "puncture", "not found: " + p.message);
+    return out;
+  }
+  line(out,
+       "puncture force",
+       fmt::format("{} N (F / 2 pi G H A = {})", num(p.force_n), num(p.normalized_force)));
+  line(out, "puncture depth", num(p.depth_mm) + " mm");
+  line(out, "stage", to_string(p.stage));
+  line(out, "configuration", to_string(p.configuration));
+  line(out, "Part III stretch", num(p.part_three_stretch));
+  line(out, "largest I1", num(p.state.max_first_invariant));
+  line(out, "crack starts", p.crack_location);
+  line(out,
+       "crack position",
+       fmt::format("reference radius R = {} mm, current radius r = {} mm",
+                   num(p.crack_reference_radius_mm),
+                   num(p.crack_radius_mm)));
+  return out;
+}
+
+std::string full_report(const LoadingCurve& c, const Problem& p) {
+  if (!c.ok()) return failure(c);
+  std::string out;
+  line(out, "stick -> slip switch", switch_text(c, p));
+  line(out, "Part II appears", part_two_text(c, p));
+  out += full_report(c.puncture);
+  const double end = c.points.empty() ? 0.0 : c.points.back().depth_mm;
+  if (c.puncture.ok() && c.puncture.depth_mm < end * (1.0 - 1e-9))
+    out += "  (the curve continues past the puncture depth)\n";
+  return out;
+}
+
+}  // namespace puncture
