@@ -63,7 +63,6 @@ struct InflationFields {
 
 // One inflated equilibrium.
 struct InflationState : Outcome {  // Converged, NoConvergence or BeyondLocking
-  std::string message;             // why, when not converged
 
   double pole_stretch = 1.0;           // equibiaxial stretch at the pole, lambda0
   double pressure_mpa = 0.0;           // p [MPa]
