@@ -19,7 +19,7 @@ int main() {
   const auto& m = e.fields;
   for (std::size_t i = 0; i < m.size(); i += m.size() / 8)
     fmt::print("  part {}  R = {:7.3f} mm  r = {:7.3f} mm  z = {:7.3f} mm  I1 = {:6.2f}\n",
-               m.part[i],
+               static_cast<int>(m.part[i]),
                m.reference_radius_mm[i],
                m.radius_mm[i],
                m.deflection_mm[i],

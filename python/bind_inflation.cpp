@@ -76,22 +76,6 @@ InflationCurveOptions range_of(int points, double max_pole_stretch, int scan_poi
   return o;
 }
 
-using FieldColumn = std::vector<double> InflationFields::*;
-
-// The fields with the CLI's CSV column names.
-constexpr std::pair<const char*, FieldColumn> kFieldColumns[] = {
-    {"R_mm", &InflationFields::reference_radius_mm},
-    {"r_mm", &InflationFields::radius_mm},
-    {"z_mm", &InflationFields::height_mm},
-    {"slope_rad", &InflationFields::slope_rad},
-    {"lambda1", &InflationFields::radial_stretch},
-    {"lambda2", &InflationFields::hoop_stretch},
-    {"lambda3", &InflationFields::thickness_stretch},
-    {"s1_mpa", &InflationFields::radial_stress_mpa},
-    {"s2_mpa", &InflationFields::hoop_stress_mpa},
-    {"I1", &InflationFields::first_invariant},
-};
-
 using StateValue = double InflationState::*;
 
 // The states' columns with the CLI's CSV names, and the attribute of each.
@@ -182,37 +166,6 @@ void bind_types(py::module_& m) {
           [](const InflationProblem& p, py::dict) { return InflationProblem(p); },
           py::arg("memo"))
       .def("__repr__", &problem_repr);
-
-  py::class_<InflationFields> fields(
-      m,
-      "InflationFields",
-      "Fields along the meridian from the pole (R = 0) to the clamp (R = A); read-only numpy\n"
-      "arrays.");
-  fields.def("__len__", &InflationFields::size)
-      .def(
-          "columns",
-          [](py::object self) {
-            const auto& f = self.cast<const InflationFields&>();
-            py::dict d;
-            for (const auto& [name, member] : kFieldColumns) d[name] = view(f.*member, self);
-            return d;
-          },
-          "The fields as a dict of arrays named like the CLI's CSV columns");
-  const std::pair<const char*, FieldColumn> named[] = {
-      {"reference_radius_mm", &InflationFields::reference_radius_mm},
-      {"radius_mm", &InflationFields::radius_mm},
-      {"height_mm", &InflationFields::height_mm},
-      {"slope_rad", &InflationFields::slope_rad},
-      {"radial_stretch", &InflationFields::radial_stretch},
-      {"hoop_stretch", &InflationFields::hoop_stretch},
-      {"thickness_stretch", &InflationFields::thickness_stretch},
-      {"radial_stress_mpa", &InflationFields::radial_stress_mpa},
-      {"hoop_stress_mpa", &InflationFields::hoop_stress_mpa},
-      {"first_invariant", &InflationFields::first_invariant}};
-  for (const auto& [name, member] : named)
-    fields.def_property_readonly(name, [member = member](py::object self) {
-      return view(self.cast<const InflationFields&>().*member, self);
-    });
 
   py::class_<InflationState, Outcome> state(
       m, "InflationState", "One inflated equilibrium", py::dynamic_attr());

@@ -31,6 +31,11 @@ constexpr std::pair<const char*, Column> kFieldColumns[] = {
     {"friction_traction_mpa", &MembraneFields::friction_traction_mpa},
 };
 
+// The part numbers as a new int array (the parts are an enum in C++).
+py::array_t<int> part_numbers(const MembraneFields& f) {
+  return column<int>(f.part, [](MembranePart p) { return static_cast<int>(p); });
+}
+
 void field(py::class_<MembraneFields>& c, const char* name, Column member, const char* doc) {
   c.def_property_readonly(
       name,
@@ -70,19 +75,19 @@ void bind_results(py::module_& m) {
       m,
       "MembraneFields",
       "Fields along the meridian from the centre (R = 0) to the clamp (R = A), one value per\n"
-      "sample; read-only numpy arrays.");
+      "sample, for indentation and inflation alike; read-only numpy arrays.");
   fields
       .def_property_readonly(
           "part",
-          [](py::object self) { return view(self.cast<const MembraneFields&>().part, self); },
-          "1 free, 2 on the indenter's side, 3 under the tip")
+          [](const MembraneFields& f) { return part_numbers(f); },
+          "1 free, 2 on the indenter's side, 3 under the tip (an inflated membrane: all 1)")
       .def("__len__", &MembraneFields::size)
       .def(
           "columns",
           [](py::object self) {
             const auto& f = self.cast<const MembraneFields&>();
             py::dict d;
-            d["part"] = view(f.part, self);
+            d["part"] = part_numbers(f);
             for (const auto& [name, member] : kFieldColumns) d[name] = view(f.*member, self);
             return d;
           },
@@ -95,11 +100,13 @@ void bind_results(py::module_& m) {
   field(fields,
         "deflection_mm",
         &MembraneFields::deflection_mm,
-        "z, axial displacement below the clamp plane, in the indentation direction [mm]");
+        "z, displacement from the clamp plane along the load: below it in the indenter's\n"
+        "direction when indented, the height above it when inflated [mm]");
   field(fields,
         "slope_rad",
         &MembraneFields::slope_rad,
-        "phi, angle of the meridian to the clamp plane [rad]");
+        "phi, angle of the meridian to the clamp plane, positive where it returns toward the\n"
+        "clamp plane going outward [rad]");
   field(fields, "radial_stretch", &MembraneFields::radial_stretch, "lambda1 (meridional)");
   field(fields, "hoop_stretch", &MembraneFields::hoop_stretch, "lambda2 = r / R");
   field(fields,

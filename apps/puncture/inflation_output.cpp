@@ -80,7 +80,7 @@ std::vector<Cell> state_cells(const InflationState& s) {
           s.max_first_invariant_radius_mm};
 }
 
-Table fields_rows(const InflationFields& f) {
+Table fields_rows(const MembraneFields& f) {
   Table t{{"R_mm",
            "r_mm",
            "z_mm",
@@ -95,7 +95,7 @@ Table fields_rows(const InflationFields& f) {
   for (std::size_t i = 0; i < f.size(); ++i)
     t.rows.push_back({f.reference_radius_mm[i],
                       f.radius_mm[i],
-                      f.height_mm[i],
+                      f.deflection_mm[i],
                       f.slope_rad[i],
                       f.radial_stretch[i],
                       f.hoop_stretch[i],

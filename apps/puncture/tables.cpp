@@ -51,7 +51,7 @@ Table fields_table(const MembraneFields& m) {
                "contact_pressure_mpa",
                "friction_traction_mpa"};
   for (std::size_t i = 0; i < m.size(); ++i)
-    t.rows.push_back({m.part[i],
+    t.rows.push_back({static_cast<int>(m.part[i]),
                       m.reference_radius_mm[i],
                       m.radius_mm[i],
                       m.deflection_mm[i],

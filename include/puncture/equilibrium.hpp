@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "puncture/membrane_fields.hpp"
 #include "puncture/options.hpp"
 #include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
@@ -18,33 +19,10 @@ enum class Configuration {
 
 enum class Stage { Stick, Slip };
 
-// The parts of the membrane (docs/model.md): the free membrane, the part wrapped on the
-// indenter's side and the part under its tip.  The values are the part numbers of the fields.
-enum class MembranePart { Free = 1, Side = 2, Tip = 3 };
-
 std::string to_string(Configuration configuration);
 // Machine-readable name, as written in CSV and JSON: "slip_with_part_two" and so on.
 std::string to_token(Configuration configuration);
 std::string to_string(Stage stage);
-
-// Fields along the meridian from the centre (R = 0) to the clamp (R = A), in physical units.
-struct MembraneFields {
-  std::vector<int> part;                      // 1 free, 2 on the indenter's side, 3 under the tip
-  std::vector<double> reference_radius_mm;    // R, position in the flat reference state
-  std::vector<double> radius_mm;              // r, current distance from the axis
-  std::vector<double> deflection_mm;          // z, current axial displacement below the clamp
-                                              // plane, in the indentation direction
-  std::vector<double> slope_rad;              // phi, angle of the meridian to the clamp plane
-  std::vector<double> radial_stretch;         // lambda1 (meridional)
-  std::vector<double> hoop_stretch;           // lambda2 = r / R
-  std::vector<double> thickness_stretch;      // lambda3 = 1 / (lambda1 lambda2)
-  std::vector<double> radial_stress_mpa;      // s1, nominal (force per reference area)
-  std::vector<double> hoop_stress_mpa;        // s2, nominal
-  std::vector<double> first_invariant;        // I1 = lambda1^2 + lambda2^2 + lambda3^2
-  std::vector<double> contact_pressure_mpa;   // P_n in Part II (true, per current area), else 0
-  std::vector<double> friction_traction_mpa;  // mu P_n in Part II, else 0
-  std::size_t size() const { return part.size(); }
-};
 
 struct Equilibrium : Outcome {
   Configuration configuration = Configuration::Unloaded;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "puncture/material.hpp"
+#include "puncture/membrane_fields.hpp"
 #include "puncture/options.hpp"
 #include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
@@ -45,22 +46,6 @@ void validate(const InflationProblem& problem);
 // Pressure scale G H / A [MPa]: the normalised pressure is p A / (G H).
 double pressure_scale_mpa(const InflationProblem& problem);
 
-// Fields along the meridian from the pole (R = 0) to the clamp (R = A), in physical units.
-struct InflationFields {
-  std::vector<double> reference_radius_mm;  // R, position in the flat reference state
-  std::vector<double> radius_mm;            // r, current distance from the axis
-  std::vector<double> height_mm;            // z, current height above the clamp plane
-  std::vector<double> slope_rad;            // phi, angle of the meridian below the horizontal,
-                                            // outward: 0 at the pole, > pi/2 where it overhangs
-  std::vector<double> radial_stretch;       // lambda1 (meridional)
-  std::vector<double> hoop_stretch;         // lambda2 = r / R
-  std::vector<double> thickness_stretch;    // lambda3 = 1 / (lambda1 lambda2)
-  std::vector<double> radial_stress_mpa;    // s1, nominal (force per reference area)
-  std::vector<double> hoop_stress_mpa;      // s2, nominal
-  std::vector<double> first_invariant;      // I1 = lambda1^2 + lambda2^2 + lambda3^2
-  std::size_t size() const { return reference_radius_mm.size(); }
-};
-
 // One inflated equilibrium.
 struct InflationState : Outcome {  // Converged, NoConvergence or BeyondLocking
 
@@ -81,7 +66,7 @@ struct InflationState : Outcome {  // Converged, NoConvergence or BeyondLocking
   double max_first_invariant_radius_mm = 0.0;            // ... and r
   double clamp_residual = 0.0;                           // |lambda2(A) - 1| reached by the shooting
   int shooting_evaluations = 0;                          // integrations used
-  InflationFields fields;                                // when SolverOptions::record_fields
+  MembraneFields fields;  // when SolverOptions::record_fields; every part Free, deflection = height
 };
 
 // The equilibrium whose pole stretch is `pole_stretch` (>= 1).  Throws std::invalid_argument

@@ -24,9 +24,12 @@ def test_state_has_numpy_fields_from_pole_to_clamp():
     assert len(f) == f.first_invariant.size > 200
     assert f.reference_radius_mm[0] == 0.0 and f.reference_radius_mm[-1] == pytest.approx(25.0)
     assert f.hoop_stretch[-1] == pytest.approx(1.0, abs=1e-8)  # the clamp
-    assert f.height_mm[0] == pytest.approx(s.pole_height_mm)
-    assert set(f.columns()) == {"R_mm", "r_mm", "z_mm", "slope_rad", "lambda1", "lambda2",
-                                "lambda3", "s1_mpa", "s2_mpa", "I1"}
+    assert isinstance(f, pu.MembraneFields)  # the same type as an indented state's
+    assert f.deflection_mm[0] == pytest.approx(s.pole_height_mm)  # along the pressure: height
+    assert set(f.part) == {1}  # free throughout
+    assert not f.contact_pressure_mpa.any()
+    assert {"R_mm", "r_mm", "z_mm", "slope_rad", "lambda1", "lambda2", "lambda3", "s1_mpa",
+            "s2_mpa", "I1"} <= set(f.columns())
     assert s.problem.clamp_radius_mm == 25.0
 
 

@@ -18,7 +18,9 @@ void line(std::string& out, std::string_view label, std::string_view value) {
   out += fmt::format("  {:<24}{}\n", label, value);
 }
 
-std::string failure(const Outcome& o) { return fmt::format("  {}: {}\n", to_string(o.status), o.message); }
+std::string failure(const Outcome& o) {
+  return fmt::format("  {}: {}\n", to_string(o.status), o.message);
+}
 
 std::string switch_text(const LoadingCurve& c, const Problem& p) {
   if (c.stick_slip.occurs)
@@ -35,12 +37,11 @@ std::string part_two_text(const LoadingCurve& c, const Problem& p) {
   if (!c.part_two_onset_depth_mm || !c.part_two_onset_force_n)
     return p.stick.rule == StickRule::Always ? "never (the membrane is held)" : "not found";
   const double end = c.points.empty() ? 0.0 : c.points.back().depth_mm;
-  const auto text = fmt::format("at depth {} mm, force {} N{}",
-                                num(*c.part_two_onset_depth_mm),
-                                num(*c.part_two_onset_force_n),
-                                c.part_two_onset_at_switch
-                                    ? ", on sliding at the stick -> slip switch"
-                                    : "");
+  const auto text =
+      fmt::format("at depth {} mm, force {} N{}",
+                  num(*c.part_two_onset_depth_mm),
+                  num(*c.part_two_onset_force_n),
+                  c.part_two_onset_at_switch ? ", on sliding at the stick -> slip switch" : "");
   return *c.part_two_onset_depth_mm > end ? text + ", beyond the end of the curve" : text;
 }
 
@@ -57,9 +58,7 @@ std::string full_report(const Problem& p) {
   line(out, "critical I1", num(p.critical_i1));
   line(out, "stick criterion", describe(p.stick));
   line(out, "Part II equation", to_string(p.part_two_equation));
-  line(out,
-       "force scale 2 pi G H A",
-       num(force_scale_n(p)) + " N (normalised force = F / this)");
+  line(out, "force scale 2 pi G H A", num(force_scale_n(p)) + " N (normalised force = F / this)");
   return out;
 }
 

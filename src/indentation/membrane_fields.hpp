@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "indentation/scaled_solution.hpp"
+#include "mechanics/field_point.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/membrane_stress.hpp"
 
@@ -16,24 +17,6 @@ struct FieldScales {
   double shear_modulus_mpa;  // G: stresses
   double thickness_mm;       // H: contact pressures from line tensions
 };
-
-inline void append_point(MembraneFields& m, MembranePart part, double r_ref, double radius,
-                         double deflection, double slope, double l1, double l2,
-                         const MembraneStress& st, double g_mpa, double pressure, double friction) {
-  m.part.push_back(static_cast<int>(part));
-  m.reference_radius_mm.push_back(r_ref);
-  m.radius_mm.push_back(radius);
-  m.deflection_mm.push_back(deflection);
-  m.slope_rad.push_back(slope);
-  m.radial_stretch.push_back(l1);
-  m.hoop_stretch.push_back(l2);
-  m.thickness_stretch.push_back(1.0 / (l1 * l2));
-  m.radial_stress_mpa.push_back(st.s1 * g_mpa);
-  m.hoop_stress_mpa.push_back(st.s2 * g_mpa);
-  m.first_invariant.push_back(st.i1);
-  m.contact_pressure_mpa.push_back(pressure);
-  m.friction_traction_mpa.push_back(friction);
-}
 
 // Part I, from the indenter to the clamp: its height is measured from its inner end, which lies
 // `inner_height` (normalised) above the tip.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "inflation/scaled_inflation.hpp"
+#include "mechanics/field_point.hpp"
 
 namespace puncture {
 
@@ -22,19 +23,21 @@ void check_pole_stretch(double pole_stretch) {
 
 namespace {
 
-void push_field(InflationFields& f, const MaterialLaw& law, double g, double a, double r_ref,
+// The membrane is free throughout, its deflection along the pressure is its height.
+void push_field(MembraneFields& f, const MaterialLaw& law, double g, double a, double r_ref,
                 double radius, double height, double slope, double l1, double l2) {
-  const auto st = membrane_stress(law, l1, l2);
-  f.reference_radius_mm.push_back(a * r_ref);
-  f.radius_mm.push_back(a * radius);
-  f.height_mm.push_back(a * height);
-  f.slope_rad.push_back(slope);
-  f.radial_stretch.push_back(l1);
-  f.hoop_stretch.push_back(l2);
-  f.thickness_stretch.push_back(1.0 / (l1 * l2));
-  f.radial_stress_mpa.push_back(g * st.s1);
-  f.hoop_stress_mpa.push_back(g * st.s2);
-  f.first_invariant.push_back(st.i1);
+  append_point(f,
+               MembranePart::Free,
+               a * r_ref,
+               a * radius,
+               a * height,
+               slope,
+               l1,
+               l2,
+               membrane_stress(law, l1, l2),
+               g,
+               0.0,
+               0.0);
 }
 
 }  // namespace

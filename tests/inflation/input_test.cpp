@@ -73,7 +73,7 @@ TEST(InflationInput, TheFlatStateIsExact) {
   ASSERT_GT(s.fields.size(), 2u);
   for (std::size_t i = 0; i < s.fields.size(); ++i) {
     EXPECT_EQ(s.fields.radial_stretch[i], 1.0);
-    EXPECT_EQ(s.fields.height_mm[i], 0.0);
+    EXPECT_EQ(s.fields.deflection_mm[i], 0.0);
   }
 }
 
@@ -103,7 +103,7 @@ TEST(InflationInput, NoNaNAnywhereAlongTheCurves) {
     ASSERT_GT(f.size(), 100u);
     for (const auto* v : {&f.reference_radius_mm,
                           &f.radius_mm,
-                          &f.height_mm,
+                          &f.deflection_mm,
                           &f.slope_rad,
                           &f.radial_stretch,
                           &f.hoop_stretch,

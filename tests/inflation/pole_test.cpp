@@ -16,7 +16,7 @@ using test::solved;
 
 // Radius of curvature at the pole from the profile: z(r) = z0 - r^2 / (2 rho) + c2 r^4 + c3 r^6
 // fitted by least squares to the samples with r < 5 % of the clamp radius.
-double fitted_pole_radius_mm(const InflationFields& f, double clamp_radius_mm) {
+double fitted_pole_radius_mm(const MembraneFields& f, double clamp_radius_mm) {
   std::vector<std::size_t> near;
   for (std::size_t i = 0; i < f.size(); ++i)
     if (f.radius_mm[i] < 0.05 * clamp_radius_mm) near.push_back(i);
@@ -25,7 +25,7 @@ double fitted_pole_radius_mm(const InflationFields& f, double clamp_radius_mm) {
   for (std::size_t k = 0; k < near.size(); ++k) {
     const double x = std::pow(f.radius_mm[near[k]] / clamp_radius_mm, 2);
     m.row(k) << 1.0, x, x * x, x * x * x;
-    z(k) = f.height_mm[near[k]] / clamp_radius_mm;
+    z(k) = f.deflection_mm[near[k]] / clamp_radius_mm;
   }
   const Eigen::VectorXd c = m.colPivHouseholderQr().solve(z);
   return -clamp_radius_mm / (2.0 * c(1));
@@ -64,14 +64,14 @@ TEST(InflationPole, FieldsStartEquibiaxialAtThePole) {
     EXPECT_EQ(f.reference_radius_mm.front(), 0.0);
     EXPECT_EQ(f.radial_stretch.front(), 2.0);
     EXPECT_EQ(f.hoop_stretch.front(), 2.0);
-    EXPECT_NEAR(f.height_mm.front(), s.pole_height_mm, 1e-12);
+    EXPECT_NEAR(f.deflection_mm.front(), s.pole_height_mm, 1e-12);
     // The first integrated sample is within 1e-3 A of the pole, where lambda1 - lambda2 =
     // (a - b) R^2 ~ 1e-6: equal to the pole's stretch to that order.
     EXPECT_NEAR(f.radial_stretch[1], f.hoop_stretch[1], 1e-5);
     // Clamp: lambda2 = 1, r = A, z = 0.
     EXPECT_NEAR(f.hoop_stretch.back(), 1.0, 1e-8);
     EXPECT_NEAR(f.radius_mm.back(), 25.0, 25.0 * 1e-8);
-    EXPECT_NEAR(f.height_mm.back(), 0.0, 1e-9);
+    EXPECT_NEAR(f.deflection_mm.back(), 0.0, 1e-9);
   }
 }
 

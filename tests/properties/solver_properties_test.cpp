@@ -187,7 +187,10 @@ void check_identities(const Problem& p, const Equilibrium& e) {
   if (e.stage == Stage::Slip) RC_ASSERT(std::isfinite(e.corner_tension_ratio));
   std::vector<std::size_t> one, two, three;
   for (std::size_t i = 0; i < m.size(); ++i)
-    (m.part[i] == 1 ? one : m.part[i] == 2 ? two : three).push_back(i);
+    (m.part[i] == MembranePart::Free   ? one
+     : m.part[i] == MembranePart::Side ? two
+                                       : three)
+        .push_back(i);
   RC_ASSERT(!one.empty());
   RC_ASSERT(!three.empty());
   RC_ASSERT(two.empty() == (e.configuration != Configuration::SlipWithPartTwo));
@@ -208,7 +211,7 @@ void check_identities(const Problem& p, const Equilibrium& e) {
   // 1e-10, up to 100 x that when its bracket collapses: 1e-8.
   const std::size_t last = m.size() - 1;
   const double big_a = p.geometry.clamp_radius_mm;
-  RC_ASSERT(m.part[last] == 1);
+  RC_ASSERT(m.part[last] == MembranePart::Free);
   RC_ASSERT(std::abs(m.reference_radius_mm[last] - big_a) <= 1e-12 * big_a);
   RC_ASSERT(std::abs(m.hoop_stretch[last] - 1.0) <= 1e-8);
   RC_ASSERT(std::abs(m.deflection_mm[last]) <= 1e-10 * std::max(1.0, e.depth_mm));

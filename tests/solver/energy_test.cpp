@@ -83,7 +83,7 @@ StoredEnergy stored_energy(const Problem& p, const Equilibrium& e) {
   const double u_tip = scale * energy_density_mpa(p, lambda, lambda) * 0.5 * r_b * r_b;
   std::vector<double> r, integrand;
   for (std::size_t i = 0; i < m.size(); ++i) {
-    if (m.part[i] == 3) continue;
+    if (m.part[i] == MembranePart::Tip) continue;
     r.push_back(m.reference_radius_mm[i]);
     integrand.push_back(energy_density_mpa(p, m.radial_stretch[i], m.hoop_stretch[i]) * r.back());
   }

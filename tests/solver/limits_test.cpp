@@ -50,9 +50,11 @@ TEST(ZeroLoad, FieldsCoverTheWholeFlatMembrane) {
           const double r_ref = m.reference_radius_mm[i];
           if (i > 0) EXPECT_GE(r_ref, m.reference_radius_mm[i - 1]);
           // Under the tip (R <= a) part 3, beyond it part 1; R = a is the boundary of both.
-          if (r_ref < a * (1.0 - kRoundOff)) EXPECT_EQ(m.part[i], 3);
-          if (r_ref > a * (1.0 + kRoundOff)) EXPECT_EQ(m.part[i], 1);
-          if (i > 0) EXPECT_LE(m.part[i], m.part[i - 1]) << "3 from the centre, then 1";
+          if (r_ref < a * (1.0 - kRoundOff)) EXPECT_EQ(m.part[i], MembranePart::Tip);
+          if (r_ref > a * (1.0 + kRoundOff)) EXPECT_EQ(m.part[i], MembranePart::Free);
+          if (i > 0)
+            EXPECT_LE(static_cast<int>(m.part[i]), static_cast<int>(m.part[i - 1]))
+                << "3 from the centre, then 1";
           EXPECT_NEAR(m.radius_mm[i], r_ref, kRoundOff * big_a);
           EXPECT_EQ(m.deflection_mm[i], 0.0);
           EXPECT_EQ(m.slope_rad[i], 0.0);

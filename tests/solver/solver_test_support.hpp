@@ -36,7 +36,7 @@ inline double force_at(const Problem& p, double f) { return f * force_scale_n(p)
 inline std::vector<std::size_t> part_indices(const MembraneFields& m, int part) {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < m.size(); ++i)
-    if (m.part[i] == part) out.push_back(i);
+    if (static_cast<int>(m.part[i]) == part) out.push_back(i);
   return out;
 }
 
