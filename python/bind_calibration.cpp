@@ -52,6 +52,12 @@ void check_problem(const Problem& problem) {
     throw py::value_error(message);
 }
 
+void check_problem(const Problem& problem, Unknown unknown) {
+  if (const auto message = invalid_input_message(validation_errors(problem, unknown));
+      !message.empty())
+    throw py::value_error(message);
+}
+
 std::vector<double> to_vector(const py::array_t<double, py::array::forcecast>& a,
                               const char* name) {
   if (a.ndim() != 1)

@@ -30,7 +30,7 @@ void require_finite(double value, const char* name, const char* range, bool ok);
 template <class F>
 auto as_value_error(F&& f, const std::string& prefix = {}) {
   try {
-    return f();
+    return raising_value_error(f);  // InvalidInput: ValueError naming the attribute
   } catch (const CsvError& e) {
     throw py::value_error(e.what());
   } catch (const std::invalid_argument& e) {
@@ -40,6 +40,8 @@ auto as_value_error(F&& f, const std::string& prefix = {}) {
 }
 
 void check_problem(const Problem& problem);
+// The problem's errors but those of the unknown a calibration determines.
+void check_problem(const Problem& problem, Unknown unknown);
 
 std::vector<double> to_vector(const py::array_t<double, py::array::forcecast>& a, const char* name);
 

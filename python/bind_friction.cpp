@@ -44,9 +44,7 @@ void bind_friction(py::module_& m) {
          const std::optional<double>& puncture_force_n,
          const std::optional<std::variant<HoleMethod, std::string>>& method,
          const std::optional<SolverOptions>& options) {
-        Problem base = problem;
-        base.friction = 0.0;  // what is calibrated
-        check_problem(base);
+        check_problem(problem, Unknown::Friction);
         require_finite(hole_ratio, "hole_ratio", "> 0", hole_ratio > 0.0);
         require_finite(hole_ratio_sd, "hole_ratio_sd", ">= 0", hole_ratio_sd >= 0.0);
         if (puncture_force_n)
@@ -75,7 +73,7 @@ void bind_friction(py::module_& m) {
         FrictionEstimate e;
         as_value_error([&] {
           py::gil_scoped_release release;
-          e = friction_from_hole(base, hole, chosen, o);
+          e = friction_from_hole(problem, hole, chosen, o);  // ignores its friction
         });
         if (!e.friction.ok()) raise_solver_error(e.friction.message, e.friction.message);
         return e;

@@ -35,17 +35,14 @@ void bind_jlim(py::module_& m) {
               "material: J_lim is a parameter of the Gent law; jlim_from_puncture_force needs "
               "a Gent material, got {}",
               law_name(problem.material.law)));
-        Problem base = problem;  // its J_lim is what is calibrated: a valid placeholder
-        if (std::isfinite(base.critical_i1) && base.critical_i1 > 3.0)
-          base.material.law = Gent{2.0 * (base.critical_i1 - 3.0)};
-        check_problem(base);
+        check_problem(problem, Unknown::JLim);
         require_finite(puncture_force_n, "puncture_force_n", "> 0 N", puncture_force_n > 0.0);
         JLimOptions o;
         if (options) o.solver = *options;
         JLimEstimate e;
         as_value_error([&] {
           py::gil_scoped_release release;
-          e = jlim_from_puncture_force(base, puncture_force_n, o);
+          e = jlim_from_puncture_force(problem, puncture_force_n, o);  // ignores its J_lim
         });
         if (!e.j_lim.ok()) raise_solver_error(e.j_lim.message, e.j_lim.message);
         return e;

@@ -8,6 +8,7 @@
 
 #include "calibration_output.hpp"
 #include "cli_error.hpp"
+#include "parameter_flags.hpp"
 #include "progress.hpp"
 #include "puncture/calibration.hpp"
 #include "puncture/csv.hpp"
@@ -33,17 +34,9 @@ void require_finite(double value, const char* flag, const char* range, bool ok) 
 
 // A library input error, with the flag it is about when known.
 [[noreturn]] void rethrow_as_input(const std::exception& e, const char* prefix = nullptr) {
+  if (const auto* invalid = dynamic_cast<const InvalidInput*>(&e); invalid && !prefix)
+    rethrow_with_flags(*invalid);
   throw InputError(prefix ? fmt::format("{}: {}", prefix, e.what()) : std::string(e.what()));
-}
-
-// The problem the shared flags describe, with the calibrated parameter set to a valid
-// placeholder so that validation checks only the rest.
-Problem problem_without(ProblemFlags flags, const char* calibrated) {
-  if (std::string(calibrated) == "friction") flags.friction = 0.0;
-  if (std::string(calibrated) == "jlim" && std::isfinite(flags.critical_i1) &&
-      flags.critical_i1 > 3.0)
-    flags.j_lim = 2.0 * (flags.critical_i1 - 3.0);
-  return make_problem(flags);
 }
 
 std::string run_critical_i1(const CalibrationFlags& f, Format format) {
@@ -113,7 +106,7 @@ std::string run_friction(const CLI::App& app, const ProblemFlags& pf, const Cali
   if (with_force)
     require_finite(f.puncture_force_n, "--puncture-force", "> 0 N", f.puncture_force_n > 0.0);
   FrictionReport report;
-  report.problem = problem_without(pf, "friction");
+  report.problem = make_problem(pf, Unknown::Friction);
   report.hole = {f.hole_ratio,
                  f.hole_ratio_sd,
                  with_force ? std::optional<double>(f.puncture_force_n) : std::nullopt};
@@ -153,7 +146,7 @@ std::string run_jlim(const CLI::App& app, const ProblemFlags& pf, const Calibrat
                  ">= 0 N and below --puncture-force",
                  f.puncture_force_sd_n >= 0.0 && f.puncture_force_sd_n < f.puncture_force_n);
   JLimReport report;
-  report.problem = problem_without(pf, "jlim");
+  report.problem = make_problem(pf, Unknown::JLim);
   require_finite(f.critical_i1_sd,
                  "--critical-i1-sd",
                  ">= 0 and below --critical-i1 - 3",

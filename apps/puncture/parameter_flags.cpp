@@ -12,7 +12,7 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 18> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 21> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
@@ -31,6 +31,9 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 18> kFlagOfP
     {"scan_points", "--scan-points"},
     {"force_n", "--force"},
     {"depth_mm", "--depth"},
+    {"material.law", "--material"},
+    {"puncture_force_n", "--puncture-force"},
+    {"hole.ratio", "--hole-ratio"},
 }};
 
 }  // namespace

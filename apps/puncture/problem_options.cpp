@@ -110,8 +110,9 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
       ->capture_default_str();
 }
 
-Problem make_problem(const ProblemFlags& f) {
-  std::vector<std::string> errors;
+namespace {
+
+Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   Problem p;
   p.geometry.clamp_radius_mm = f.clamp_radius_mm;
   p.indenter = FlatPunch{f.indenter_radius_mm};
@@ -126,7 +127,22 @@ Problem make_problem(const ProblemFlags& f) {
     p.stick = *stick;
   else
     errors.push_back(fmt::format("--stick: expected {}, got '{}'", kStickForms, f.stick));
+  return p;
+}
+
+}  // namespace
+
+Problem make_problem(const ProblemFlags& f) {
+  std::vector<std::string> errors;
+  const Problem p = problem_of(f, errors);
   throw_if_invalid("invalid input:", errors, validation_errors(p));
+  return p;
+}
+
+Problem make_problem(const ProblemFlags& f, Unknown unknown) {
+  std::vector<std::string> errors;
+  const Problem p = problem_of(f, errors);
+  throw_if_invalid("invalid input:", errors, validation_errors(p, unknown));
   return p;
 }
 

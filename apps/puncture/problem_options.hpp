@@ -33,6 +33,9 @@ void add_problem_options(CLI::App& app, ProblemFlags& flags);
 // prefixed with its flag, using the library's validation_errors().
 Problem make_problem(const ProblemFlags& flags);
 
+// The problem the flags describe for a calibration of `unknown`: its flag is not checked.
+Problem make_problem(const ProblemFlags& flags, Unknown unknown);
+
 // The membrane the flags describe, for `inflate` (no indenter: the indenter and contact flags
 // are not read).  Throws InputError like make_problem.
 InflationProblem make_inflation_problem(const ProblemFlags& flags);

@@ -55,6 +55,12 @@ std::vector<ValidationError> validation_errors(const Problem& problem);
 // Throws InvalidInput listing every problem.
 void validate(const Problem& problem);
 
+// A parameter a calibration determines: the problem's own value of it is ignored.
+enum class Unknown { Friction, JLim };
+// The errors of every other parameter: as validation_errors(problem) with the unknown at a
+// value the rest allows (friction 0; J_lim = 2 (I1c - 3), as any J_lim > I1c - 3 would do).
+std::vector<ValidationError> validation_errors(const Problem& problem, Unknown unknown);
+
 // Force scale 2 pi G H A [N]: the paper's normalised force is F / force_scale.
 double force_scale_n(const Problem& problem);
 

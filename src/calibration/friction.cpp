@@ -93,13 +93,16 @@ std::string to_string(HoleMethod method) {
 
 FrictionEstimate friction_from_hole(const Problem& problem, const HoleMeasurement& hole,
                                     HoleMethod method, const FrictionOptions& options) {
+  if (auto errors = validation_errors(problem, Unknown::Friction); !errors.empty())
+    throw InvalidInput(std::move(errors), "invalid problem:");
   Problem base = problem;
-  base.friction = 0.0;
-  validate(base);
+  base.friction = 0.0;  // the unknown: the problem's own is ignored
   if (!std::isfinite(hole.ratio) || hole.ratio <= 0.0)
-    throw std::invalid_argument(fmt::format(
-        "hole ratio (indenter diameter / hole diameter) must be a finite number > 0, got {}",
-        hole.ratio));
+    throw InvalidInput(
+        "hole.ratio",
+        fmt::format(
+            "hole ratio (indenter diameter / hole diameter) must be a finite number > 0, got {}",
+            hole.ratio));
   if (!std::isfinite(hole.ratio_sd) || hole.ratio_sd < 0.0)
     throw std::invalid_argument(fmt::format(
         "hole ratio standard deviation must be a finite number >= 0, got {}", hole.ratio_sd));

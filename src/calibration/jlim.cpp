@@ -20,15 +20,15 @@ double j_lim_of(double i1_excess, double u) { return i1_excess * (1.0 + std::exp
 JLimEstimate jlim_from_puncture_force(const Problem& problem, double puncture_force_n,
                                       const JLimOptions& options) {
   if (!std::holds_alternative<Gent>(problem.material.law))
-    throw std::invalid_argument(
-        fmt::format("J_lim is a parameter of the Gent law; the material is {}",
-                    law_name(problem.material.law)));
-  Problem base = problem;
+    throw InvalidInput("material.law",
+                       fmt::format("J_lim is a parameter of the Gent law; the material is {}",
+                                   law_name(problem.material.law)));
+  if (auto errors = validation_errors(problem, Unknown::JLim); !errors.empty())
+    throw InvalidInput(std::move(errors), "invalid problem:");
   const double i1_excess = problem.critical_i1 - 3.0;
-  base.material.law = Gent{std::isfinite(i1_excess) && i1_excess > 0.0 ? 2.0 * i1_excess : 1.0};
-  validate(base);
   if (!std::isfinite(puncture_force_n) || puncture_force_n <= 0.0)
-    throw std::invalid_argument(
+    throw InvalidInput(
+        "puncture_force_n",
         fmt::format("puncture force must be a finite number > 0 N, got {}", puncture_force_n));
   if (!(options.min_gap > 0.0) || !(options.max_gap > options.min_gap) ||
       !std::isfinite(options.max_gap) || options.points_per_decade < 1)
@@ -38,7 +38,7 @@ JLimEstimate jlim_from_puncture_force(const Problem& problem, double puncture_fo
   SolverOptions solver = options.solver;
   solver.record_fields = false;
   const auto with_j_lim = [&](double j_lim) {
-    Problem q = base;
+    Problem q = problem;
     q.material.law = Gent{j_lim};
     return q;
   };
@@ -67,7 +67,7 @@ JLimEstimate jlim_from_puncture_force(const Problem& problem, double puncture_fo
   if (samples.back().model) out.smallest_force_n = std::exp(*samples.back().model);
   if (samples.front().model) out.largest_force_n = std::exp(*samples.front().model);
   {
-    Problem neo = base;
+    Problem neo = problem;
     neo.material.law = NeoHookean{};
     const auto p = predict_puncture(neo, solver);
     if (p.ok()) out.neo_hookean_force_n = p.force_n;

@@ -100,6 +100,17 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
   return errors;
 }
 
+std::vector<ValidationError> validation_errors(const Problem& problem, Unknown unknown) {
+  Problem rest = problem;
+  if (unknown == Unknown::Friction) {
+    rest.friction = 0.0;
+  } else if (std::holds_alternative<Gent>(rest.material.law)) {
+    const double i1_excess = problem.critical_i1 - 3.0;
+    rest.material.law = Gent{std::isfinite(i1_excess) && i1_excess > 0.0 ? 2.0 * i1_excess : 1.0};
+  }
+  return validation_errors(rest);
+}
+
 void validate(const Problem& problem) {
   detail::throw_if_invalid("invalid problem:", validation_errors(problem));
 }

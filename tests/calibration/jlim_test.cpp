@@ -105,5 +105,30 @@ TEST(JLimFromPunctureForce, RefusesInvalidInput) {
   EXPECT_THROW(jlim_from_puncture_force(low_i1, 0.7), std::invalid_argument);
 }
 
+// The unknown's own value is ignored, every other parameter is still checked.
+TEST(ValidationOfTheUnknown, IgnoresOnlyTheCalibratedParameter) {
+  Problem p;
+  p.material.law = Gent{125.0};
+  p.critical_i1 = 200.0;  // beyond 3 + J_lim: invalid, but J_lim is what is calibrated
+  p.friction = -1.0;      // invalid, but the friction is what is calibrated
+  const auto parameters = [](const std::vector<ValidationError>& errors) {
+    std::vector<std::string> out;
+    for (const auto& e : errors) out.push_back(e.parameter);
+    return out;
+  };
+  EXPECT_EQ(parameters(validation_errors(p)),
+            (std::vector<std::string>{"friction", "critical_i1"}));
+  EXPECT_EQ(parameters(validation_errors(p, Unknown::JLim)), std::vector<std::string>{"friction"});
+  EXPECT_EQ(parameters(validation_errors(p, Unknown::Friction)),
+            std::vector<std::string>{"critical_i1"});
+  p.geometry.thickness_mm = -1.0;
+  EXPECT_EQ(parameters(validation_errors(p, Unknown::JLim)),
+            (std::vector<std::string>{"geometry.thickness_mm", "friction"}));
+  EXPECT_THROW(jlim_from_puncture_force(p, 0.7), InvalidInput);
+  p.geometry.thickness_mm = 0.2;
+  p.friction = 0.18;
+  EXPECT_NO_THROW(jlim_from_puncture_force(p, 0.7));  // J_lim 125 is ignored
+}
+
 }  // namespace
 }  // namespace puncture
