@@ -38,7 +38,10 @@ void bind_verification(py::module_& m) {
       .value("Skipped", Verdict::Skipped);
 
   py::class_<FePart>(m, "FePart", "One part of the meridian as the elements represent it")
-      .def_readonly("part", &FePart::part, "1 free, 2 on the indenter's side, 3 under the tip")
+      .def_property_readonly(
+          "part",
+          [](const FePart& p) { return static_cast<int>(p.part); },
+          "1 free, 2 on the indenter's side, 3 under the tip")
       .def_readonly("start_radius_mm", &FePart::start_radius_mm)
       .def_readonly("end_radius_mm", &FePart::end_radius_mm)
       .def_readonly("logarithmic", &FePart::logarithmic)
@@ -69,7 +72,9 @@ void bind_verification(py::module_& m) {
       .def(
           "first_invariant",
           [](const FeState& s, int part, double reference_radius_mm) {
-            return fe_first_invariant(s, part, reference_radius_mm);
+            if (part < 1 || part > 3)
+              throw py::value_error(fmt::format("part: expected 1, 2 or 3, got {}", part));
+            return fe_first_invariant(s, static_cast<MembranePart>(part), reference_radius_mm);
           },
           py::arg("part"),
           py::arg("reference_radius_mm"),

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "puncture/membrane_fields.hpp"
 #include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
 
@@ -31,7 +32,7 @@ struct FeOptions {
 // One part of the meridian as the elements represent it: nodes equally spaced in a coordinate
 // xi in [0, 1], mapped to the reference radius linearly or (Part I) logarithmically.
 struct FePart {
-  int part = 1;                       // 1 free, 2 on the indenter's side, 3 under the tip
+  MembranePart part = MembranePart::Free;
   double start_radius_mm = 0.0;       // reference radius R of its inner end [mm]
   double end_radius_mm = 0.0;         // ... and of its outer end [mm]
   bool logarithmic = false;           // R = R_start (R_end / R_start)^xi, else linear in xi
@@ -68,7 +69,7 @@ FeState fe_solve_at_depth(const Problem& problem, double depth_mm, FeContact con
 
 // I1 of the finite-element solution at reference radius R [mm] inside the given part (1, 2 or
 // 3); empty when the state has no such part or R is outside it.
-std::optional<double> fe_first_invariant(const FeState& state, int part,
+std::optional<double> fe_first_invariant(const FeState& state, MembranePart part,
                                          double reference_radius_mm);
 
 std::string to_string(FeContact contact);

@@ -54,7 +54,7 @@ Mesh build_mesh(Layout layout, const Scaled& s, const FeOptions& options,
   if (layout != Layout::Held) {
     corner_radius = unknown();
     side_top_radius = corner_radius;
-    MeshPart tip{3, false, n23, fixed_slot(0.0), corner_radius, {}, {}};
+    MeshPart tip{MembranePart::Tip, false, n23, fixed_slot(0.0), corner_radius, {}, {}};
     for (int i = 0; i <= n23 * p; ++i) {
       tip.r.push_back(i == 0 ? fixed_slot(0.0) : i == n23 * p ? fixed_slot(s.a) : unknown());
       tip.z.push_back(at_depth);
@@ -63,7 +63,7 @@ Mesh build_mesh(Layout layout, const Scaled& s, const FeOptions& options,
   }
   if (layout == Layout::SlipWithSide) {
     side_top_radius = unknown_slot(corner_radius.index, side_length);
-    MeshPart side{2, false, n23, corner_radius, side_top_radius, {}, {}};
+    MeshPart side{MembranePart::Side, false, n23, corner_radius, side_top_radius, {}, {}};
     for (int i = 0; i <= n23 * p; ++i) {
       side.r.push_back(fixed_slot(s.a));
       side.z.push_back(i == 0 ? at_depth : unknown());
@@ -71,7 +71,7 @@ Mesh build_mesh(Layout layout, const Scaled& s, const FeOptions& options,
     part_one_first_z = side.z.back();
     mesh.parts.push_back(side);
   }
-  MeshPart free_part{1, true, n1, side_top_radius, fixed_slot(1.0), {}, {}};
+  MeshPart free_part{MembranePart::Free, true, n1, side_top_radius, fixed_slot(1.0), {}, {}};
   for (int i = 0; i <= n1 * p; ++i) {
     const bool first = i == 0, last = i == n1 * p;
     free_part.r.push_back(first ? fixed_slot(s.a) : last ? fixed_slot(1.0) : unknown());
@@ -123,9 +123,10 @@ FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::Vector
       out.radius_mm.push_back(fe::value_of(part.r[i], x) * A);
       out.deflection_mm.push_back(fe::value_of(part.z[i], x) * A);
     }
-    if (part.part == 3) state.corner_reference_radius_mm = out.end_radius_mm;
-    if (part.part == 1) state.part_two_top_reference_radius_mm = out.start_radius_mm;
-    if (part.part == 2) state.part_two = true;
+    if (part.part == MembranePart::Tip) state.corner_reference_radius_mm = out.end_radius_mm;
+    if (part.part == MembranePart::Free)
+      state.part_two_top_reference_radius_mm = out.start_radius_mm;
+    if (part.part == MembranePart::Side) state.part_two = true;
     // Largest I1 at the quadrature points and at both ends of every element.
     std::array<double, fe::kMaxLocal> values;
     std::array<const Slot*, fe::kMaxLocal> slots;
@@ -150,7 +151,7 @@ FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::Vector
 // dr/dR where Part I leaves the indenter: negative when the free membrane would enter it.
 double corner_radial_slope(const FeState& state) {
   for (const FePart& part : state.parts)
-    if (part.part == 1) {
+    if (part.part == MembranePart::Free) {
       const double dR = node_radius(part.logarithmic,
                                     part.elements * state.order,
                                     1,
@@ -171,7 +172,7 @@ Eigen::VectorXd starting_guess(const Mesh& mesh, const Scaled& s, const FeState*
   const double corner = previous ? previous->corner_reference_radius_mm / A : s.a * 0.999;
   const double scale = previous ? s.depth / (previous->depth_mm / A) : 1.0;
   for (const MeshPart& part : mesh.parts)  // the moving corner first
-    if (part.part == 3) x[part.end.index] = corner;
+    if (part.part == MembranePart::Tip) x[part.end.index] = corner;
   for (const MeshPart& part : mesh.parts) {
     const double start = fe::value_of(part.start, x), end = fe::value_of(part.end, x);
     for (std::size_t i = 0; i < part.r.size(); ++i) {
@@ -185,9 +186,9 @@ Eigen::VectorXd starting_guess(const Mesh& mesh, const Scaled& s, const FeState*
       if (old) {
         r = old->radius / A;
         z = old->deflection / A * scale;
-      } else if (part.part == 3) {
+      } else if (part.part == MembranePart::Tip) {
         r = R * s.a / corner;
-      } else if (part.part == 1) {
+      } else if (part.part == MembranePart::Free) {
         z = s.depth * std::log(R) / std::log(start);
       }
       if (part.r[i].index >= 0) x[part.r[i].index] = r;
@@ -348,7 +349,7 @@ StepResult solve_step_in_layout(const Problem& problem, Layout& layout, const Sc
 // where the membrane leaves the side (a dip of O(h^2) relative): the answer is not admissible.
 bool crosses_side(const FeState& state, double indenter_radius_mm) {
   for (const FePart& part : state.parts)
-    if (part.part == 1)
+    if (part.part == MembranePart::Free)
       for (double r : part.radius_mm)
         if (r < indenter_radius_mm * (1.0 - 1e-3)) return true;
   return false;
@@ -446,7 +447,7 @@ FeState fe_solve_at_depth(const Problem& problem, double depth_mm, FeContact con
   return fe_solve_at_depths(problem, {depth_mm}, contact, options).front();
 }
 
-std::optional<double> fe_first_invariant(const FeState& state, int part,
+std::optional<double> fe_first_invariant(const FeState& state, MembranePart part,
                                          double reference_radius_mm) {
   for (const FePart& p : state.parts)
     if (p.part == part) {

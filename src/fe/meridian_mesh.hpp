@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fe/element_energy.hpp"
+#include "puncture/membrane_fields.hpp"
 
 namespace puncture::fe {
 
@@ -22,7 +23,7 @@ inline Slot unknown_slot(int index, double offset = 0.0) { return Slot{index, of
 inline Slot fixed_slot(double value, bool at_depth = false) { return Slot{-1, value, at_depth}; }
 
 struct MeshPart {
-  int part = 1;  // 1 free, 2 on the indenter's side, 3 under the tip
+  MembranePart part = MembranePart::Free;
   bool logarithmic = false;
   int elements = 0;
   Slot start, end;         // reference radii of the part's ends

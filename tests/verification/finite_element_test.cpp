@@ -39,7 +39,7 @@ double worst_first_invariant_difference(const FeState& fe, const Equilibrium& sh
   double worst = 0.0;
   const MembraneFields& m = shooting.fields;
   for (std::size_t i = 0; i < m.size(); ++i) {
-    const auto i1 = fe_first_invariant(fe, static_cast<int>(m.part[i]), m.reference_radius_mm[i]);
+    const auto i1 = fe_first_invariant(fe, m.part[i], m.reference_radius_mm[i]);
     if (!i1) continue;  // at a part's end, outside the other method's part by its tolerance
     worst = std::max(worst, std::abs(*i1 / m.first_invariant[i] - 1.0));
   }
