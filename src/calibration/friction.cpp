@@ -96,6 +96,10 @@ FrictionEstimate friction_from_hole(const Problem& problem, const HoleMeasuremen
   Problem base = problem;
   base.friction = 0.0;
   validate(base);
+  if (!std::holds_alternative<FlatPunch>(problem.indenter))
+    throw InvalidInput("indenter",
+                       "the friction calibration is implemented for the flat punch only, not the " +
+                           describe(problem.indenter));
   if (!std::isfinite(hole.ratio) || hole.ratio <= 0.0)
     throw std::invalid_argument(fmt::format(
         "hole ratio (indenter diameter / hole diameter) must be a finite number > 0, got {}",
