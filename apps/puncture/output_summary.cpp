@@ -25,6 +25,8 @@ void inputs(std::string& out, const Problem& p) {
   const auto& g = p.geometry;
   out += "Inputs\n";
   line(out, "clamp radius A", num(g.clamp_radius_mm, "clamp radius") + " mm");
+  // The flat punch's summary is unchanged; another shape is named.
+  if (!std::holds_alternative<FlatPunch>(p.indenter)) line(out, "indenter", describe(p.indenter));
   line(out, "indenter radius a", num(radius_mm(p.indenter), "indenter radius") + " mm");
   line(out, "thickness H", num(g.thickness_mm, "thickness") + " mm");
   line(out, "material", describe(p.material));
