@@ -24,6 +24,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "indentation/contact/contact_model.hpp"
@@ -124,7 +125,7 @@ class SphereTippedContact {
     if (!(l > 0.0) || !std::isfinite(l) || !(first_invariant(l, l) < locking_i1_))
       return std::nullopt;
     const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_};
-    const double r_start = kPoleStart * s_.a;
+    const double r_start = kPoleStart * s_.a / l;  // theta = kPoleStart there
     SphereCapState y = sphere_cap_pole_state(law_, s_.a, l, r_start);
     auto vertical = [&](double r, const SphereCapState& x) {
       return r * membrane_stress(law_, x[1], s_.a * std::sin(x[0]) / r).s1 * std::sin(x[0]);
@@ -133,7 +134,7 @@ class SphereTippedContact {
       return x[0] >= kHalfPiCap || vertical(r, x) >= f;
     };
     double r_prev = r_start, r_hit = -1.0;
-    SphereCapState y_prev = y;
+    SphereCapState y_prev = y, y_hit = y;
     IntegrationSettings integration = part_one_.settings().integration;
     if (samples) {
       const int n = std::max(1, part_one_.settings().field_points);
@@ -146,6 +147,7 @@ class SphereTippedContact {
     const bool ok = integrate_part(cap, y, r_start, 1.0, integration, [&](double r, const auto& x) {
       if (r > r_start && crossed(r, x)) {
         r_hit = r;
+        y_hit = x;
         return false;
       }
       r_prev = r;
@@ -161,48 +163,88 @@ class SphereTippedContact {
     const auto at = [&](double r) {
       return step_or_advance(cap, y_prev, r_prev, r, part_one_.settings().integration);
     };
-    // The root of event(r, state) in (r_prev, r_end], where it is < 0 at r_prev and >= 0 at
-    // r_end (a trial leaving the material's domain counts as past it).
-    auto locate = [&](auto&& event, double r_end) -> std::optional<double> {
-      auto g = [&](double r) {
-        const auto x = at(r);
-        return x ? event(r, *x) : 1.0;
-      };
-      const double g_prev = g(r_prev), g_end = g(r_end);
+    // The root of event in (r_prev, r_end], negative at r_prev and >= 0 at r_end (states given):
+    // Newton's method kept inside the bracket (Boost's newton_raphson_iterate, with the event's
+    // derivative along the cap), or TOMS 748 if a trial leaves the material's domain.
+    struct Event {
+      double value;
+      double slope;
+    };
+    auto locate = [&](auto&& event,
+                      double r_end,
+                      const SphereCapState& y_end,
+                      SphereCapState& y_root) -> std::optional<double> {
+      const double g_prev = event(r_prev, y_prev).value, g_end = event(r_end, y_end).value;
+      y_root = y_prev;
       if (g_prev >= 0.0) return r_prev;
+      y_root = y_end;
       if (!(g_end >= 0.0)) return std::nullopt;
       if (g_end == 0.0) return r_end;
-      std::uintmax_t iterations = 100;
-      const auto bracket =
-          boost::math::tools::toms748_solve(g,
-                                            r_prev,
-                                            r_end,
-                                            g_prev,
-                                            g_end,
-                                            boost::math::tools::eps_tolerance<double>(50),
-                                            iterations);
-      return 0.5 * (bracket.first + bracket.second);
+      double r_root = 0.0;
+      try {
+        std::uintmax_t iterations = 60;
+        r_root = boost::math::tools::newton_raphson_iterate(
+            [&](double r) {
+              const auto x = at(r);
+              if (!x) throw IntegrationFailure{};
+              const Event e = event(r, *x);
+              return std::make_pair(e.value, e.slope);
+            },
+            r_prev + (r_end - r_prev) * g_prev / (g_prev - g_end),
+            r_prev,
+            r_end,
+            50,
+            iterations);
+      } catch (const IntegrationFailure&) {
+        auto g = [&](double r) {
+          const auto x = at(r);
+          return x ? event(r, *x).value : 1.0;
+        };
+        std::uintmax_t iterations = 100;
+        const auto bracket =
+            boost::math::tools::toms748_solve(g,
+                                              r_prev,
+                                              r_end,
+                                              g_prev,
+                                              g_end,
+                                              boost::math::tools::eps_tolerance<double>(50),
+                                              iterations);
+        r_root = 0.5 * (bracket.first + bracket.second);
+      }
+      const auto x = at(r_root);
+      if (!x) return std::nullopt;
+      y_root = *x;
+      return r_root;
+    };
+    const auto equator = [&](double, const SphereCapState& x) {
+      return Event{x[0] - kHalfPiCap, x[1] / s_.a};
+    };
+    // V = R s1 sin(theta) - f, with dV/dR = cos(theta) (s2 sin(theta) + R s1 lambda1 / a).
+    const auto edge = [&](double r, const SphereCapState& x) {
+      const double l2 = s_.a * std::sin(x[0]) / r;
+      const auto st = membrane_stress(law_, x[1], l2);
+      const double c = std::cos(x[0]), sn = std::sin(x[0]);
+      return Event{r * st.s1 * sn - f, c * (st.s2 * sn + r * st.s1 * x[1] / s_.a)};
     };
     // The search ends at the equator if the step passes it (R s1 sin(theta) peaks there: dV/dR
     // carries a factor cos(theta)); the force is carried before the equator if V reaches f by
     // the search's end.
     double r_stop = r_hit;
-    const auto y_hit = at(r_hit);
-    if (!y_hit || (*y_hit)[0] >= kHalfPiCap) {
-      const auto r_equator =
-          locate([&](double, const SphereCapState& x) { return x[0] - kHalfPiCap; }, r_hit);
+    SphereCapState y_stop = y_hit;
+    if (y_hit[0] >= kHalfPiCap) {
+      const auto r_equator = locate(equator, r_hit, y_hit, y_stop);
       if (!r_equator) return std::nullopt;
       r_stop = *r_equator;
     }
     std::optional<double> r_end = r_stop;
-    auto y_end = at(r_stop);
-    if (!y_end) return std::nullopt;
+    std::optional<SphereCapState> y_end = y_stop;
     CapEnd end;
     end.at_equator = true;
-    if (std::isfinite(f) && vertical(r_stop, *y_end) >= f) {
-      r_end = locate([&](double r, const SphereCapState& x) { return vertical(r, x) - f; }, r_stop);
-      y_end = r_end ? at(*r_end) : std::nullopt;
-      if (!y_end) return std::nullopt;
+    if (std::isfinite(f) && vertical(r_stop, y_stop) >= f) {
+      SphereCapState y_edge;
+      r_end = locate(edge, r_stop, y_stop, y_edge);
+      if (!r_end) return std::nullopt;
+      y_end = y_edge;
       end.at_equator = false;
     }
     end.r = *r_end;
@@ -303,22 +345,41 @@ class SphereTippedContact {
           "condition";
       return plan;
     }
-    // The contact ends on the hemisphere.  The lowest pole stretch whose cap carries f before the
-    // equator: the onset's, unless R s1 sin(theta) peaks on the way (the hoop stretch falls
-    // below 1 towards the equator at small stretches) and reaches f earlier.  Bisection on
-    // whether the force is carried before the equator.
-    double lo = 1.0, hi = onset->stretch;
+    // The contact ends on the hemisphere.  The shooting needs a pole stretch whose cap carries f
+    // before the equator with a negative clamp residual: the onset's, unless R s1 sin(theta)
+    // peaks on the way (the hoop stretch falls below 1 towards the equator at small stretches)
+    // and reaches f earlier.  Then stretches 1 + (onset - 1) / 2^k are tried downward: any
+    // carrying one with a negative residual lies below the root and will do; past the lowest
+    // carrying stretch, a bisection on whether the force is carried before the equator finds it.
+    double hi = onset->stretch;
     double g_hi = g_onset;
     const auto carried = [&](double l) {
       const auto end = march(l, f);
       return end && !end->at_equator;
     };
     if (carried(hi * (1.0 - 1e-12))) {
-      for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
-        const double mid = 0.5 * (lo + hi);
-        (carried(mid) ? hi : lo) = mid;
+      double lo = 1.0;
+      bool bracketed = false;
+      for (int k = 1; k <= 60; ++k) {
+        const double l = 1.0 + (onset->stretch - 1.0) / std::ldexp(1.0, k);
+        if (!carried(l)) {
+          lo = l;
+          break;
+        }
+        hi = l;
+        g_hi = counted(Configuration::SlipWithoutPartTwo, l).value_or(kBeyondDomain);
+        if (g_hi < 0.0) {
+          bracketed = true;
+          break;
+        }
       }
-      g_hi = counted(Configuration::SlipWithoutPartTwo, hi).value_or(kBeyondDomain);
+      if (!bracketed) {
+        for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+          const double mid = 0.5 * (lo + hi);
+          (carried(mid) ? hi : lo) = mid;
+        }
+        g_hi = counted(Configuration::SlipWithoutPartTwo, hi).value_or(kBeyondDomain);
+      }
       if (!(g_hi < 0.0)) {
         plan.status = Status::NoConvergence;
         plan.message =
@@ -468,19 +529,74 @@ class SphereTippedContact {
     double stretch;
     CapEnd end;
   };
+  // V at the equator grows with the pole stretch.  The root is bracketed from the last onset
+  // found (the shooting and the depth Newton ask for nearby forces in turn), else from 1, and
+  // refined by TOMS 748 to a few ulps.
   std::optional<EquatorOnset> equator_onset(double f) const {
     auto g = [&](double l) -> std::optional<double> {
       const auto end = march(l, std::numeric_limits<double>::infinity());
       if (!end) return std::nullopt;
       return end->vertical - f;
     };
-    const double cap = locking_radial_stretch(law_, 1.0);
-    const auto root = shoot_increasing(
-        g, 1.0, -f, cap, part_one_.settings().max_iterations, std::isfinite(cap) ? 0.0 : 0.05);
+    // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
+    // law without locking whose V at the equator stays below f at every stretch): far from f
+    // there, while a true root meets it to the integration's accuracy.
+    auto found = [&](double l) -> std::optional<EquatorOnset> {
+      const auto end = march(l, std::numeric_limits<double>::infinity());
+      if (!end || !(std::abs(end->vertical - f) <= 1e-3 * f)) return std::nullopt;
+      last_onset_ = {f, l};
+      return EquatorOnset{l, *end};
+    };
+    if (last_onset_.first == f) return found(last_onset_.second);
+    std::optional<double> root;
+    if (const double l0 = last_onset_.second; l0 > 1.0) {
+      const auto g0 = g(l0);
+      if (g0 && *g0 < 0.0) {
+        root = shoot_increasing(g,
+                                l0,
+                                *g0,
+                                std::numeric_limits<double>::infinity(),
+                                part_one_.settings().max_iterations,
+                                1e-3 * (l0 - 1.0));
+      } else if (g0) {
+        // Step down towards 1 until V falls below f (V = 0 at 1).
+        double hi = l0, g_hi = *g0, step = 1e-3 * (l0 - 1.0), lo = l0;
+        std::optional<double> g_lo;
+        for (int k = 0; k < 60; ++k, step *= 2.0) {
+          lo = std::max(1.0, hi - step);
+          g_lo = lo == 1.0 ? std::optional<double>(-f) : g(lo);
+          if (g_lo && *g_lo < 0.0) break;
+          if (g_lo) {
+            hi = lo;
+            g_hi = *g_lo;
+          }
+        }
+        if (g_lo && *g_lo < 0.0) {
+          if (g_hi == 0.0) return found(hi);
+          std::uintmax_t iterations =
+              static_cast<std::uintmax_t>(part_one_.settings().max_iterations);
+          const auto bracket = boost::math::tools::toms748_solve(
+              [&](double l) { return g(l).value_or(kBeyondDomain); },
+              lo,
+              hi,
+              *g_lo,
+              g_hi,
+              [](double x0, double x1) {
+                return std::abs(x1 - x0) <=
+                       4.0 * std::numeric_limits<double>::epsilon() * std::abs(x1);
+              },
+              iterations);
+          root = 0.5 * (bracket.first + bracket.second);
+        }
+      }
+    }
+    if (!root) {
+      const double cap = locking_radial_stretch(law_, 1.0);
+      root = shoot_increasing(
+          g, 1.0, -f, cap, part_one_.settings().max_iterations, std::isfinite(cap) ? 0.0 : 0.05);
+    }
     if (!root) return std::nullopt;
-    const auto end = march(*root, std::numeric_limits<double>::infinity());
-    if (!end) return std::nullopt;
-    return EquatorOnset{*root, *end};
+    return found(*root);
   }
   // Pole stretch of the onset, for the tests.
   std::optional<double> equator_onset_stretch(double f) const {
@@ -504,8 +620,8 @@ class SphereTippedContact {
       "rule none) is solved";
 
  private:
-  // Where the cap starts: a fraction of the tip radius from the pole (the series' error there,
-  // O((L R / a)^4), is below the integration's tolerance).
+  // Where the cap starts: the polar angle there (the series' error, O((L R / a)^4) = 1e-16,
+  // is far below the integration's tolerance).
   static constexpr double kPoleStart = 1e-4;
   static constexpr double kHalfPiCap = boost::math::constants::half_pi<double>();
   static constexpr double kEdgeTol = 1e-9;
@@ -634,6 +750,9 @@ class SphereTippedContact {
   const Law& law_;
   SphereTippedSettings s_;
   double locking_i1_;
+  // The last equator onset found (force, pole stretch): a warm start for the next (one solve
+  // runs single-threaded on its own contact model).
+  mutable std::pair<double, double> last_onset_{-1.0, 0.0};
 };
 
 }  // namespace puncture::detail
