@@ -41,7 +41,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                  f.indenter,
                  "Probe shape: flat (the paper's sharp flat-ended cylinder) or\n"
                  "sphere-tipped (a cylinder ending in a hemisphere of the same radius;\n"
-                 "frictionless only: needs --friction 0 and --stick none)")
+                 "sliding only, --stick none; with --friction > 0 only while the contact\n"
+                 "stays on the hemisphere)")
       ->group(kGeometry)
       ->check(CLI::IsMember({"flat", "sphere-tipped"}))
       ->capture_default_str();

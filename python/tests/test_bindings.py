@@ -262,3 +262,17 @@ def test_reprs_are_the_library_reports():
     curve = pu.loading_curve(problem, points=5)
     assert repr(curve).startswith("<LoadingCurve converged: 5 points, depth 0 to ")
     assert curve.puncture.crack_location in repr(curve.puncture)
+
+
+def test_sphere_tipped_probe_matches_cli(cli):
+    problem = pu.Problem(indenter=pu.SphereTipped(radius_mm=2.0), friction=0.0)
+    assert repr(problem.indenter) == "SphereTipped(radius_mm=2)"
+    prediction = pu.predict_puncture(problem)
+    ours = cli.json("puncture", "--indenter", "sphere-tipped", "--friction", "0")
+    assert ours["inputs"]["indenter"] == "sphere-tipped"
+    assert prediction.force_n == pytest.approx(ours["puncture"]["force_n"], rel=1e-12)
+    assert prediction.depth_mm == pytest.approx(ours["puncture"]["depth_mm"], rel=1e-12)
+    assert prediction.crack_location == "the pole, under the tip of the sphere"
+    state = pu.solve_at_depth(problem, 10.0)
+    tip = state.fields.part == 3
+    assert tip.any() and (state.fields.contact_pressure_mpa[tip] > 0).all()

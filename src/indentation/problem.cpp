@@ -85,14 +85,9 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
              p.friction)});
   detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
   const auto& s = p.stick;
-  // The sphere-tipped probe is solved frictionless and sliding only (docs/model.md): anything
-  // else is refused rather than answered frictionless.
+  // The sphere-tipped probe is solved sliding only (docs/model.md, §15): a stick stage is
+  // refused rather than answered as sliding.
   if (std::holds_alternative<SphereTipped>(p.indenter)) {
-    if (std::isfinite(p.friction) && p.friction != 0.0)
-      errors.push_back({"friction",
-                        fmt::format("friction on the sphere-tipped probe is not implemented yet: "
-                                    "friction coefficient must be 0, got {}",
-                                    p.friction)});
     if (s.rule != StickRule::None)
       errors.push_back({"stick.rule",
                         fmt::format("the stick stage on the sphere-tipped probe is not implemented "

@@ -1,6 +1,6 @@
 #pragma once
 // The sphere-tipped probe: a cylinder of radius a ending in a hemisphere of the same radius; its
-// contact model (contact_model.hpp), frictionless.  Membrane parts (docs/model.md,
+// contact model (contact_model.hpp), sliding.  Membrane parts (docs/model.md,
 // "Sphere-tipped probe"):
 //   the cap     the membrane lying on the hemisphere from the pole (R = 0) to the contact edge
 //               (or to the equator); the pole is equibiaxial, the rest integrated outward in R
@@ -13,8 +13,9 @@
 //   SlipWithPartTwo     contact past the equator; p = lambda2 where Part I leaves the side
 //                       (> a / A).  The pole stretch is then fixed by the force alone: the cap
 //                       carries f at the equator.
-// Friction on the curved contact and a stick stage are not implemented: the plan says so (and
-// validation_errors rejects such problems before any solve), never a frictionless number.
+// Coulomb slip on the hemisphere (the membrane slides away from the pole; friction mu p points to
+// it).  Not implemented: friction on the cylinder side (a contact that reaches it with mu > 0 is a
+// status, never a number) and a stick stage (validation_errors refuses the stick rules).
 #include <fmt/format.h>
 
 #include <array>
@@ -39,7 +40,7 @@ namespace puncture::detail {
 
 struct SphereTippedSettings {
   double a;   // tip (and cylinder) radius / clamp radius
-  double mu;  // Coulomb friction coefficient (only 0 is implemented)
+  double mu;  // Coulomb friction coefficient (on the hemisphere; the side only without)
 };
 
 // The cap: the membrane on the hemisphere of radius a, state (theta, lambda1, e) along the
@@ -47,7 +48,7 @@ struct SphereTippedSettings {
 // sphere's centre from the axis; it is also the meridian's slope), e = int W R dR the stored
 // energy from the pole (/ (2 pi G H A^2)).  lambda2 = a sin(theta) / R.
 //   dtheta/dR = lambda1 / a                            the meridian lies on the sphere
-//   d(R s1)/dR = s2 cos(theta)                          tangential balance, frictionless
+//   d(R s1)/dR = s2 cos(theta) + mu p r lambda1          tangential balance (Coulomb slip)
 //   dlambda2/dR = (lambda1 cos(theta) - lambda2) / R    (from lambda2 = a sin(theta) / R)
 // the second solved for lambda1' as in the free membrane (mechanics/free_membrane_ode.hpp).
 using SphereCapState = std::array<double, 3>;
@@ -57,6 +58,7 @@ struct SphereCapSystem {
   const Law& law;
   double a;
   double locking_i1;
+  double mu = 0.0;  // Coulomb slip: the membrane slides away from the pole, friction points to it
 
   void operator()(const SphereCapState& x, SphereCapState& dx, double r_ref) const {
     const double theta = x[0], l1 = x[1];
@@ -67,7 +69,11 @@ struct SphereCapSystem {
       throw IntegrationFailure{};
     const double dl2 = (l1 * std::cos(theta) - l2) / r_ref;
     dx[0] = l1 / a;
-    dx[1] = (std::cos(theta) * st.s2 - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
+    // d(R s1)/dR = s2 cos(theta) + mu p r lambda1, p r lambda1 = sin(theta) (s1 l1 / l2 + s2).
+    const double tangential =
+        mu == 0.0 ? std::cos(theta) * st.s2
+                  : std::cos(theta) * st.s2 + mu * std::sin(theta) * (st.s1 * l1 / l2 + st.s2);
+    dx[1] = (tangential - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
     dx[2] = law.derivatives(st.i1, second_invariant(l1, l2)).w * r_ref;
   }
 };
@@ -77,12 +83,24 @@ struct SphereCapSystem {
 // gives c = ((3 beta - alpha) L^3 - 3 s L^2) / (16 alpha a^2), e = c / 3 - L^3 / (6 a^2), with
 // s, alpha = ds1/dlambda1 and beta = ds1/dlambda2 at the equibiaxial stretch L.  The state at R
 // has an error O(R^4).
+//
+// With friction mu the slip traction adds mu 2 s L R / a to d(R s1)/dR at O(R): lambda1 gains
+// b R, lambda2 b R / 2, with b = 4 mu s L / (3 alpha a); the O(R^2) terms would need the stresses'
+// second derivatives, so the frictional start keeps the frictionless c and has an error O(R^2)
+// (the cap then starts closer to the pole).
 template <class Law>
-SphereCapState sphere_cap_pole_state(const Law& law, double a, double l, double r_ref) {
+SphereCapState sphere_cap_pole_state(const Law& law, double a, double l, double r_ref,
+                                     double mu = 0.0) {
   const auto st = membrane_stress(law, l, l);
   const double alpha = st.ds1_dl1, beta = st.ds1_dl2, s = st.s1;
   const double c = ((3.0 * beta - alpha) * l * l * l - 3.0 * s * l * l) / (16.0 * alpha * a * a);
   const double w = law.derivatives(st.i1, second_invariant(l, l)).w;
+  if (mu != 0.0) {
+    const double b = 4.0 * mu * s * l / (3.0 * alpha * a);
+    return {(l * r_ref + 0.5 * b * r_ref * r_ref + c * r_ref * r_ref * r_ref / 3.0) / a,
+            l + b * r_ref + c * r_ref * r_ref,
+            0.5 * w * r_ref * r_ref};
+  }
   // W R integrated from the pole: W(L, L) R^2 / 2 to the order of the start (W varies as R^2).
   return {(l * r_ref + c * r_ref * r_ref * r_ref / 3.0) / a,
           l + c * r_ref * r_ref,
@@ -124,9 +142,11 @@ class SphereTippedContact {
                               InteriorMaximum<SphereCapState>* i1_max = nullptr) const {
     if (!(l > 0.0) || !std::isfinite(l) || !(first_invariant(l, l) < locking_i1_))
       return std::nullopt;
-    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_};
-    const double r_start = kPoleStart * s_.a / l;  // theta = kPoleStart there
-    SphereCapState y = sphere_cap_pole_state(law_, s_.a, l, r_start);
+    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu};
+    // theta = kPoleStart there (closer with friction: that start is exact to O(R^2) only; the
+    // neglected terms are O((mu theta)^2) ~ 1e-10 mu^2 relative at theta = 1e-5)
+    const double r_start = (s_.mu == 0.0 ? kPoleStart : kPoleStartFriction) * s_.a / l;
+    SphereCapState y = sphere_cap_pole_state(law_, s_.a, l, r_start, s_.mu);
     auto vertical = [&](double r, const SphereCapState& x) {
       return r * membrane_stress(law_, x[1], s_.a * std::sin(x[0]) / r).s1 * std::sin(x[0]);
     };
@@ -165,7 +185,8 @@ class SphereTippedContact {
     };
     // The root of event in (r_prev, r_end], negative at r_prev and >= 0 at r_end (states given):
     // Newton's method kept inside the bracket (Boost's newton_raphson_iterate, with the event's
-    // derivative along the cap), or TOMS 748 if a trial leaves the material's domain.
+    // derivative along the cap), or TOMS 748 if a trial leaves the material's domain or Newton
+    // gives up.
     struct Event {
       double value;
       double slope;
@@ -195,7 +216,7 @@ class SphereTippedContact {
             r_end,
             50,
             iterations);
-      } catch (const IntegrationFailure&) {
+      } catch (...) {  // IntegrationFailure, or Boost's evaluation_error (no root seen)
         auto g = [&](double r) {
           const auto x = at(r);
           return x ? event(r, *x).value : 1.0;
@@ -219,12 +240,14 @@ class SphereTippedContact {
     const auto equator = [&](double, const SphereCapState& x) {
       return Event{x[0] - kHalfPiCap, x[1] / s_.a};
     };
-    // V = R s1 sin(theta) - f, with dV/dR = cos(theta) (s2 sin(theta) + R s1 lambda1 / a).
+    // V = R s1 sin(theta) - f, with dV/dR = cos(theta) (s2 sin(theta) + R s1 lambda1 / a) and,
+    // with friction, + mu sin(theta)^2 (s1 lambda1 / lambda2 + s2).
     const auto edge = [&](double r, const SphereCapState& x) {
       const double l2 = s_.a * std::sin(x[0]) / r;
       const auto st = membrane_stress(law_, x[1], l2);
       const double c = std::cos(x[0]), sn = std::sin(x[0]);
-      return Event{r * st.s1 * sn - f, c * (st.s2 * sn + r * st.s1 * x[1] / s_.a)};
+      const double friction = s_.mu * sn * sn * (st.s1 * x[1] / l2 + st.s2);
+      return Event{r * st.s1 * sn - f, c * (st.s2 * sn + r * st.s1 * x[1] / s_.a) + friction};
     };
     // The search ends at the equator if the step passes it (R s1 sin(theta) peaks there: dV/dR
     // carries a factor cos(theta)); the force is carried before the equator if V reaches f by
@@ -258,13 +281,10 @@ class SphereTippedContact {
   }
 
   std::optional<FreeStart> free_start(Configuration c, double f, double p) const {
-    if (s_.mu != 0.0 || !(p > 0.0) || !std::isfinite(p)) return std::nullopt;
+    if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
     if (c == Configuration::SlipWithPartTwo) {
-      // Part I leaves the side vertically at R = a / p: R s1 = f, t = 0.
-      if (!(p > s_.a)) return std::nullopt;  // the top must lie inside the clamp
-      const auto l1 = invert_radial_stress(law_, f * p / s_.a, p);
-      if (!l1) return std::nullopt;
-      return FreeStart{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPiCap, 1.0};
+      if (s_.mu != 0.0) return std::nullopt;  // friction on the side: not implemented
+      return side_top_start(f, p);
     }
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
     const auto end = march(p, f);
@@ -304,11 +324,6 @@ class SphereTippedContact {
   ShootingPlan plan(Stage stage, double f, Residual&& counted) const {
     ShootingPlan plan;
     plan.configuration = Configuration::SlipWithoutPartTwo;
-    if (s_.mu != 0.0) {
-      plan.status = Status::InvalidInput;
-      plan.message = kFrictionNotImplemented;
-      return plan;
-    }
     if (stage == Stage::Stick) {
       plan.configuration = Configuration::Stick;
       plan.status = Status::InvalidInput;
@@ -326,6 +341,12 @@ class SphereTippedContact {
       return plan;
     }
     const double g_onset = side_indicator(f, *onset).value_or(kBeyondDomain);
+    if (g_onset >= 0.0 && s_.mu != 0.0) {
+      plan.configuration = Configuration::SlipWithPartTwo;
+      plan.status = Status::InvalidInput;
+      plan.message = kFrictionNotImplemented;
+      return plan;
+    }
     if (g_onset >= 0.0) {
       // The side exists: shoot on lambda2 where Part I leaves it, between a / A (the top at the
       // clamp, residual a / A - 1 < 0) and the equator's lambda2.
@@ -421,7 +442,6 @@ class SphereTippedContact {
   // before the material locks.
   template <class Shooting>
   std::optional<ScaledSolution> slip_change(const Shooting& shooting) const {
-    if (s_.mu != 0.0) return std::nullopt;
     auto indicator = [&](double f) -> std::optional<double> {
       const auto onset = equator_onset(f);
       if (!onset) return std::nullopt;
@@ -506,7 +526,7 @@ class SphereTippedContact {
                    st,
                    g,
                    pressure,
-                   0.0);
+                   s_.mu * pressure);
     }
   }
 
@@ -540,14 +560,18 @@ class SphereTippedContact {
     };
     // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
     // law without locking whose V at the equator stays below f at every stretch): far from f
-    // there, while a true root meets it to the integration's accuracy.
+    // there, while a true root meets it to the integration's accuracy (absolute, at the tiny
+    // forces where V at the equator crosses zero: an unstretched pole leaves the cap in hoop
+    // compression towards the equator).
     auto found = [&](double l) -> std::optional<EquatorOnset> {
       const auto end = march(l, std::numeric_limits<double>::infinity());
-      if (!end || !(std::abs(end->vertical - f) <= 1e-3 * f)) return std::nullopt;
+      if (!end || !(std::abs(end->vertical - f) <= 1e-3 * f + 1e-9)) return std::nullopt;
       last_onset_ = {f, l};
       return EquatorOnset{l, *end};
     };
-    if (last_onset_.first == f) return found(last_onset_.second);
+    if (last_onset_.first == f) {
+      if (auto same = found(last_onset_.second)) return same;
+    }
     std::optional<double> root;
     if (const double l0 = last_onset_.second; l0 > 1.0) {
       const auto g0 = g(l0);
@@ -590,11 +614,13 @@ class SphereTippedContact {
         }
       }
     }
-    if (!root) {
-      const double cap = locking_radial_stretch(law_, 1.0);
-      root = shoot_increasing(
-          g, 1.0, -f, cap, part_one_.settings().max_iterations, std::isfinite(cap) ? 0.0 : 0.05);
+    if (root) {
+      if (auto warm = found(*root)) return warm;
     }
+    // From the flat membrane (also when the warm start's bracket ends where the march fails).
+    const double cap = locking_radial_stretch(law_, 1.0);
+    root = shoot_increasing(
+        g, 1.0, -f, cap, part_one_.settings().max_iterations, std::isfinite(cap) ? 0.0 : 0.05);
     if (!root) return std::nullopt;
     return found(*root);
   }
@@ -607,14 +633,14 @@ class SphereTippedContact {
   // Clamp residual of Part I leaving the equator vertically at force f (Part II of zero length):
   // the same whether counted as the cap's end or the side's top.  Empty past locking.
   std::optional<double> side_indicator(double f, const EquatorOnset& onset) const {
-    return part_one_.residual(f, free_start(Configuration::SlipWithPartTwo, f, s_.a / onset.end.r));
+    return part_one_.residual(f, side_top_start(f, s_.a / onset.end.r));
   }
 
   const SphereTippedSettings& settings() const { return s_; }
 
   static constexpr const char* kFrictionNotImplemented =
-      "friction on the sphere-tipped probe is not implemented yet: only the frictionless contact "
-      "(friction 0) is solved";
+      "outside the sphere-tipped model: the contact reaches the cylinder side, where friction is "
+      "not implemented yet (friction on the hemisphere is; without friction the side is solved)";
   static constexpr const char* kStickNotImplemented =
       "the stick stage on the sphere-tipped probe is not implemented yet: only sliding (stick "
       "rule none) is solved";
@@ -623,12 +649,21 @@ class SphereTippedContact {
   // Where the cap starts: the polar angle there (the series' error, O((L R / a)^4) = 1e-16,
   // is far below the integration's tolerance).
   static constexpr double kPoleStart = 1e-4;
+  static constexpr double kPoleStartFriction = 1e-5;
   static constexpr double kHalfPiCap = boost::math::constants::half_pi<double>();
   static constexpr double kEdgeTol = 1e-9;
 
   bool pole_is_largest(const ScaledSolution& sol) const {
     const double l = sol.part_three_stretch;
     return first_invariant(l, l) >= sol.max_i1 * (1.0 - 1e-12);
+  }
+
+  // Part I leaving the side vertically at R = a / p: R s1 = f, t = 0.
+  std::optional<FreeStart> side_top_start(double f, double p) const {
+    if (!(p > s_.a)) return std::nullopt;  // the top must lie inside the clamp
+    const auto l1 = invert_radial_stress(law_, f * p / s_.a, p);
+    if (!l1) return std::nullopt;
+    return FreeStart{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPiCap, 1.0};
   }
 
   // Part I leaving the sphere tangentially at the contact edge: slope theta, t = R s1 cos(theta).
@@ -647,7 +682,7 @@ class SphereTippedContact {
   // The cap's largest I1 (refined between samples) into the solution's, if it is larger.
   void track_cap_maximum(const InteriorMaximum<SphereCapState>& i1_max, double,
                          ScaledSolution& sol) const {
-    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_};
+    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu};
     auto cap_i1 = [&](double r, const SphereCapState& y) {
       return first_invariant(y[1], s_.a * std::sin(y[0]) / r);
     };
