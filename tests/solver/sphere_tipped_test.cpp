@@ -450,10 +450,11 @@ TEST(SphereTipped, StickAndFrictionOnTheSideAreRefused) {
 // resultants over the cap together carry the force (trapezoid + Richardson, as above: 1e-6); the
 // force at a depth grows with the friction and tends to the frictionless one as mu -> 0 (at
 // mu = 1e-4 the difference is O(mu), below 1e-3 relative); the indenter's work exceeds the stored
-// energy, dU/ddelta < F, by an amount that vanishes with mu (the dissipation).
+// energy, dU/ddelta < F, by an amount that grows with mu (the dissipation); the largest I1 leaves
+// the pole for the cap.
 TEST(SphereTipped, CoulombSlipOnTheHemisphere) {
   const double depth = 10.0;
-  std::vector<double> forces;
+  std::vector<double> forces, crack_radii;
   for (const double mu : {0.0, 1e-4, 0.18, 0.5}) {
     Problem p = sphere_problem();
     p.friction = mu;
@@ -463,6 +464,9 @@ TEST(SphereTipped, CoulombSlipOnTheHemisphere) {
     ASSERT_TRUE(e.ok()) << mu << ": " << e.message;
     ASSERT_EQ(e.configuration, Configuration::SlipWithoutPartTwo);
     forces.push_back(e.force_n);
+    crack_radii.push_back(e.max_first_invariant_reference_radius_mm);
+    EXPECT_EQ(e.max_first_invariant_part, MembranePart::Tip);
+    EXPECT_LT(e.max_first_invariant_reference_radius_mm, e.corner_reference_radius_mm);
     // Axial balance of the cap from the fields: int (p cos(theta) + mu p sin(theta)) r lambda1 dR.
     const auto& m = e.fields;
     std::vector<double> r, y;
@@ -498,6 +502,10 @@ TEST(SphereTipped, CoulombSlipOnTheHemisphere) {
         e.max_first_invariant_reference_radius_mm,
         e.corner_reference_radius_mm);
   }
+  // Friction moves the largest I1 from the pole onto the cap, towards the contact edge.
+  EXPECT_EQ(crack_radii[0], 0.0);
+  EXPECT_GT(crack_radii[2], 0.0);
+  EXPECT_GT(crack_radii[3], crack_radii[2]);
   EXPECT_GT(forces[1], forces[0]);
   EXPECT_LT(forces[1] / forces[0] - 1.0, 1e-3);
   EXPECT_GT(forces[2], forces[1]);
