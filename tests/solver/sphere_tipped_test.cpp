@@ -537,6 +537,37 @@ TEST(SphereTipped, CoulombSlipOnTheHemisphere) {
   }
 }
 
+// Probe sizes from a/A = 0.008 (whose side contact needs the bracket from the equator's top: the
+// top at the clamp would lock) to 0.32, and the ASTM F1306 probe and opening: each punctures at
+// the pole, with the largest I1 the critical one.  Wrapped past the equator without friction,
+// the force is R s1 at the equator, carried by a cap whose solution in R / a depends on the pole
+// stretch alone: the puncture force is F = 2 pi G H a phi(I1c), whatever A (and the free part).
+// The three forces over 2 pi G H a agree to the puncture search's accuracy (1e-6 relative: the
+// pole stretch is the critical one to ~1e-8, and F depends smoothly on it).
+TEST(SphereTipped, ProbeSizesPuncture) {
+  std::vector<double> scaled;
+  for (const auto& [radius, clamp] :
+       std::vector<std::pair<double, double>>{{0.2, 25.0}, {1.6, 17.45}, {8.0, 25.0}}) {
+    Problem p = sphere_problem(Gent{125.0}, radius);
+    p.geometry.clamp_radius_mm = clamp;
+    const auto pp = predict_puncture(p);
+    ASSERT_TRUE(pp.found) << radius << ": " << pp.message;
+    EXPECT_NEAR(pp.state.max_first_invariant, p.critical_i1, 1e-6 * p.critical_i1);
+    EXPECT_EQ(pp.crack_location, "the pole, under the tip of the sphere");
+    const double over_a = pp.force_n / (2.0 * test::kPi * p.material.shear_modulus_mpa *
+                                        p.geometry.thickness_mm * radius);
+    scaled.push_back(over_a);
+    std::cout << fmt::format(
+        "a = {:g} mm, A = {:g} mm: puncture at {:.4f} mm, {:.5f} N, F / (2 pi G H a) = {:.9f}\n",
+        radius,
+        clamp,
+        pp.depth_mm,
+        pp.force_n,
+        over_a);
+  }
+  for (const double x : scaled) EXPECT_NEAR(x, scaled.front(), 1e-6 * scaled.front());
+}
+
 // The other laws run through the same contact model (dispatch), to puncture.
 TEST(SphereTipped, EveryLawPunctures) {
   for (const MaterialLaw law : {MaterialLaw{NeoHookean{}}, MaterialLaw{MooneyRivlin{0.1}}}) {
