@@ -34,6 +34,10 @@ void bind_enums(py::module_& m) {
       .value("NoConvergence", Status::NoConvergence)
       .value("BeyondLocking", Status::BeyondLocking)
       .value("StickWrapsSide", Status::StickWrapsSide)
+      .value("NotReached", Status::NotReached)
+      .value("Incomplete", Status::Incomplete)
+      .value("ChecksFailed", Status::ChecksFailed)
+      .value("OutsideModel", Status::OutsideModel)
       .def_property_readonly("token", [](Status s) { return to_string(s); });
   py::class_<Outcome>(m,
                       "Outcome",

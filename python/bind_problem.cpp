@@ -76,9 +76,15 @@ std::string geometry_repr(const Geometry& g) {
 }
 
 std::string indenter_repr(const Indenter& indenter) {
-  return std::visit(
-      [](const FlatPunch& p) { return fmt::format("FlatPunch(radius_mm={:g})", p.radius_mm); },
-      indenter);
+  struct Repr {
+    std::string operator()(const FlatPunch& p) const {
+      return fmt::format("FlatPunch(radius_mm={:g})", p.radius_mm);
+    }
+    std::string operator()(const SphereTipped& p) const {
+      return fmt::format("SphereTipped(radius_mm={:g})", p.radius_mm);
+    }
+  };
+  return std::visit(Repr{}, indenter);
 }
 
 std::string material_repr(const Material& m) {
@@ -152,6 +158,17 @@ void bind_problem(py::module_& m) {
       .def_readonly("radius_mm", &FlatPunch::radius_mm, "cylinder radius a [mm]")
       .def("__repr__", [](const FlatPunch& p) { return indenter_repr(p); });
   copyable(flat_punch);
+  py::class_<SphereTipped> sphere_tipped(
+      m,
+      "SphereTipped",
+      "A cylinder ending in a hemisphere of the same radius (sliding only, stick rule none;\n"
+      "with friction only while the contact stays on the hemisphere, for now)");
+  sphere_tipped
+      .def(py::init([](double radius_mm) { return SphereTipped{radius_mm}; }),
+           py::arg("radius_mm") = SphereTipped{}.radius_mm)
+      .def_readonly("radius_mm", &SphereTipped::radius_mm, "hemisphere and cylinder radius a [mm]")
+      .def("__repr__", [](const SphereTipped& p) { return indenter_repr(p); });
+  copyable(sphere_tipped);
 
   py::class_<Gent> gent(m, "Gent", "Gent law W/G = -(J_lim/2) ln(1 - (I1 - 3)/J_lim)");
   gent.def(py::init([](double j_lim) { return Gent{j_lim}; }), py::arg("j_lim") = Gent{}.j_lim)
@@ -331,7 +348,7 @@ void bind_problem(py::module_& m) {
            py::arg("stick") = defaults.stick,
            py::arg("part_two_equation") = defaults.part_two_equation)
       .def_readwrite("geometry", &Problem::geometry)
-      .def_readwrite("indenter", &Problem::indenter, "the probe (FlatPunch)")
+      .def_readwrite("indenter", &Problem::indenter, "the probe (FlatPunch or SphereTipped)")
       .def_readwrite("material", &Problem::material)
       .def_readwrite(
           "friction", &Problem::friction, "Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)")

@@ -20,6 +20,8 @@ std::string to_string(Status s) {
       return "incomplete";
     case Status::ChecksFailed:
       return "checks failed";
+    case Status::OutsideModel:
+      return "outside the model";
   }
   return "?";
 }

@@ -79,7 +79,8 @@ void add_inflate_command(CLI::App& app, InflateFlags& f) {
 
 std::string run_inflate(const CLI::App& app, const ProblemFlags& pf, const CurveFlags& curve,
                         const InflateFlags& f, Format format) {
-  for (const char* flag : {"--indenter-radius", "--friction", "--stick", "--part-two-equation"})
+  for (const char* flag :
+       {"--indenter", "--indenter-radius", "--friction", "--stick", "--part-two-equation"})
     if (given(app, flag))
       throw InputError(fmt::format(
           "{}: does not apply to 'inflate', an inflation test has no indenter; remove it", flag));

@@ -12,7 +12,7 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 21> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 23> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
@@ -24,6 +24,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 21> kFlagOfP
     {"friction", "--friction"},
     {"critical_i1", "--critical-i1"},
     {"stick.threshold", "--stick"},
+    {"stick.rule", "--stick"},
+    {"indenter", "--indenter"},
     {"pole_stretch", "--pole-stretch"},
     {"max_pole_stretch", "--max-pole-stretch"},
     {"pressure_mpa", "--pressure"},

@@ -37,10 +37,19 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
          "--clamp-radius", f.clamp_radius_mm, "Inner radius A of the clamping rings [mm] (> 0)")
       ->group(kGeometry)
       ->capture_default_str();
+  app.add_option("--indenter",
+                 f.indenter,
+                 "Probe shape: flat (the paper's sharp flat-ended cylinder) or\n"
+                 "sphere-tipped (a cylinder ending in a hemisphere of the same radius;\n"
+                 "sliding only, --stick none; with --friction > 0 only while the contact\n"
+                 "stays on the hemisphere)")
+      ->group(kGeometry)
+      ->check(CLI::IsMember({"flat", "sphere-tipped"}))
+      ->capture_default_str();
   app.add_option("--indenter-radius",
                  f.indenter_radius_mm,
-                 "Radius a of the flat-ended cylindrical indenter [mm]\n"
-                 "(> 0 and smaller than the clamp radius)")
+                 "Radius a of the indenter's cylinder (and of the sphere-tipped\n"
+                 "probe's hemisphere) [mm] (> 0 and smaller than the clamp radius)")
       ->group(kGeometry)
       ->capture_default_str();
   app.add_option("--thickness", f.thickness_mm, "Undeformed membrane thickness H [mm] (> 0)")
@@ -115,7 +124,10 @@ namespace {
 Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   Problem p;
   p.geometry.clamp_radius_mm = f.clamp_radius_mm;
-  p.indenter = FlatPunch{f.indenter_radius_mm};
+  if (f.indenter == "sphere-tipped")
+    p.indenter = SphereTipped{f.indenter_radius_mm};
+  else
+    p.indenter = FlatPunch{f.indenter_radius_mm};
   p.geometry.thickness_mm = f.thickness_mm;
   p.material.shear_modulus_mpa = f.shear_modulus_mpa;
   p.material.law = law_of(f, errors);

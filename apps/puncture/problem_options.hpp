@@ -12,6 +12,7 @@ namespace puncture::cli {
 struct ProblemFlags {
   Problem defaults;
   double clamp_radius_mm = defaults.geometry.clamp_radius_mm;
+  std::string indenter = "flat";
   double indenter_radius_mm = radius_mm(defaults.indenter);
   double thickness_mm = defaults.geometry.thickness_mm;
   double shear_modulus_mpa = defaults.material.shear_modulus_mpa;

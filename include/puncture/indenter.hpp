@@ -12,11 +12,20 @@ struct FlatPunch {
   double radius_mm = 2.0;  // cylinder radius a [mm]
 };
 
-using Indenter = std::variant<FlatPunch>;
+// A cylinder of radius a ending in a hemisphere of the same radius (the ASTM F1306 probe has
+// a = 1.6 mm): the membrane lies on the hemisphere from the pole to the contact edge and leaves it
+// tangentially.  Sliding only; with friction only while the contact stays on the hemisphere, for
+// now (docs/model.md, §15).
+struct SphereTipped {
+  double radius_mm = 2.0;  // hemisphere and cylinder radius a [mm]
+};
 
-// The probe's radius a [mm] (the cylinder's, for the flat punch).
+using Indenter = std::variant<FlatPunch, SphereTipped>;
+
+// The probe's radius a [mm] (the cylinder's, for the flat punch; the hemisphere's and the
+// cylinder's, for the sphere-tipped probe).
 double radius_mm(const Indenter& indenter);
-// Name and dimensions, e.g. "flat punch, radius 2 mm".
+// Name and dimensions, e.g. "flat punch, radius 2 mm", "sphere-tipped probe, radius 1.6 mm".
 std::string describe(const Indenter& indenter);
 
 }  // namespace puncture

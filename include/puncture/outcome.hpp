@@ -23,6 +23,7 @@ enum class Status {
   NotReached,      // the criterion or the target is not reached in the range the model covers
   Incomplete,      // some of the evaluations behind the result failed; the message lists them
   ChecksFailed,    // a verification check is outside its tolerance
+  OutsideModel,    // the state needs what this indenter's model does not cover (message: what)
 };
 
 std::string to_string(Status status);

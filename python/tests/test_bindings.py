@@ -274,3 +274,17 @@ def test_every_result_is_an_outcome_with_reports():
     prediction = pu.predict_puncture(problem)
     assert isinstance(prediction, pu.Outcome) and prediction.ok
     assert prediction.crack_location in pu.full_report(prediction)
+
+
+def test_sphere_tipped_probe_matches_cli(cli):
+    problem = pu.Problem(indenter=pu.SphereTipped(radius_mm=2.0), friction=0.0)
+    assert repr(problem.indenter) == "SphereTipped(radius_mm=2)"
+    prediction = pu.predict_puncture(problem)
+    ours = cli.json("puncture", "--indenter", "sphere-tipped", "--friction", "0")
+    assert ours["inputs"]["indenter"] == "sphere-tipped"
+    assert prediction.force_n == pytest.approx(ours["puncture"]["force_n"], rel=1e-12)
+    assert prediction.depth_mm == pytest.approx(ours["puncture"]["depth_mm"], rel=1e-12)
+    assert prediction.crack_location == "the pole, under the tip of the sphere"
+    state = pu.solve_at_depth(problem, 10.0)
+    tip = state.fields.part == 3
+    assert tip.any() and (state.fields.contact_pressure_mpa[tip] > 0).all()

@@ -23,6 +23,9 @@ INVALID = [
     ({"friction": 11}, ["--friction", "11"], ["friction"]),
     ({"critical_i1": 128}, ["--critical-i1", "128"], ["critical_i1"]),
     ({"stick": "force:-1"}, ["--stick", "force:-1"], ["stick.threshold"]),
+    # the sphere-tipped probe is sliding only, for now
+    ({"indenter": pu.SphereTipped(), "friction": 0, "stick": "always"},
+     ["--indenter", "sphere-tipped", "--friction", "0", "--stick", "always"], ["stick.rule"]),
     ({"geometry": pu.Geometry(clamp_radius_mm=-1), "friction": -1},
      ["--clamp-radius", "-1", "--friction", "-1"], ["geometry.clamp_radius_mm", "friction"]),
 ]

@@ -386,6 +386,11 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
                                         const std::vector<double>& depths_mm, FeContact contact,
                                         const FeOptions& options) {
   validate(problem);
+  if (!std::holds_alternative<FlatPunch>(problem.indenter))
+    throw InvalidInput(
+        "indenter",
+        "the finite-element method is implemented for the flat punch only, not the " +
+            describe(problem.indenter));
   check_options(options);
   const double A = problem.geometry.clamp_radius_mm;
   double last = 0.0;

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "indentation/contact/flat_punch.hpp"
+#include "indentation/contact/sphere_tipped.hpp"
 #include "indentation/shooting.hpp"
 #include "puncture/options.hpp"
 #include "puncture/problem.hpp"
@@ -26,6 +27,12 @@ template <class Law>
 FlatPunchContact<Law> contact_model_of(const FlatPunch&);  // declared for its type only
 inline FlatPunchSettings contact_settings(const Problem& p, const FlatPunch& punch) {
   return {punch.radius_mm / p.geometry.clamp_radius_mm, p.friction, p.part_two_equation};
+}
+
+template <class Law>
+SphereTippedContact<Law> contact_model_of(const SphereTipped&);  // declared for its type only
+inline SphereTippedSettings contact_settings(const Problem& p, const SphereTipped& probe) {
+  return {probe.radius_mm / p.geometry.clamp_radius_mm, p.friction};
 }
 
 template <class Law, class Shape>

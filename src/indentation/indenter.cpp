@@ -16,14 +16,19 @@ Overloaded(Shapes...) -> Overloaded<Shapes...>;
 }  // namespace
 
 double radius_mm(const Indenter& indenter) {
-  return std::visit(Overloaded{[](const FlatPunch& p) { return p.radius_mm; }}, indenter);
+  return std::visit(Overloaded{[](const FlatPunch& p) { return p.radius_mm; },
+                               [](const SphereTipped& p) { return p.radius_mm; }},
+                    indenter);
 }
 
 std::string describe(const Indenter& indenter) {
-  return std::visit(Overloaded{[](const FlatPunch& p) {
-                      return fmt::format("flat punch, radius {:g} mm", p.radius_mm);
-                    }},
-                    indenter);
+  return std::visit(
+      Overloaded{
+          [](const FlatPunch& p) { return fmt::format("flat punch, radius {:g} mm", p.radius_mm); },
+          [](const SphereTipped& p) {
+            return fmt::format("sphere-tipped probe, radius {:g} mm", p.radius_mm);
+          }},
+      indenter);
 }
 
 }  // namespace puncture

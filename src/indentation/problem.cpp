@@ -85,6 +85,15 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
              p.friction)});
   detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
   const auto& s = p.stick;
+  // The sphere-tipped probe is solved sliding only (docs/model.md, §15): a stick stage is
+  // refused rather than answered as sliding.
+  if (std::holds_alternative<SphereTipped>(p.indenter)) {
+    if (s.rule != StickRule::None)
+      errors.push_back({"stick.rule",
+                        fmt::format("the stick stage on the sphere-tipped probe is not implemented "
+                                    "yet: stick rule must be 'none', got '{}'",
+                                    to_string(s.rule))});
+  }
   if (s.rule == StickRule::Force || s.rule == StickRule::Depth ||
       s.rule == StickRule::EdgeTension) {
     if (!std::isfinite(s.threshold) || s.threshold <= 0.0)

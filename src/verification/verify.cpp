@@ -271,6 +271,11 @@ void compare_small_deflection(const Problem& problem, Checks& checks) {
 
 VerificationReport verify(const Problem& problem, const VerifyOptions& options) {
   validate(problem);
+  if (!std::holds_alternative<FlatPunch>(problem.indenter))
+    throw InvalidInput(
+        "indenter",
+        "the verification methods are implemented for the flat punch only, not the " +
+            describe(problem.indenter));
   if (options.elements < 4 || options.elements > 4096)
     throw std::invalid_argument(
         fmt::format("elements: must be in the range 4 to 4096, got {}", options.elements));

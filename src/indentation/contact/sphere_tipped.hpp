@@ -1,0 +1,805 @@
+#pragma once
+// The sphere-tipped probe: a cylinder of radius a ending in a hemisphere of the same radius; its
+// contact model (contact_model.hpp), sliding.  Membrane parts (docs/model.md,
+// "Sphere-tipped probe"):
+//   the cap     the membrane lying on the hemisphere from the pole (R = 0) to the contact edge
+//               (or to the equator); the pole is equibiaxial, the rest integrated outward in R
+//   the side    once the contact passes the equator: the membrane on the cylinder, where without
+//               friction R s1 = f is constant (the flat punch's Part II with mu = 0)
+//   Part I      the free membrane, leaving the hemisphere tangentially at the contact edge, or
+//               the side vertically
+// Configurations and shooting parameters:
+//   SlipWithoutPartTwo  contact on the hemisphere only; p = the pole's equibiaxial stretch
+//   SlipWithPartTwo     contact past the equator; p = lambda2 where Part I leaves the side
+//                       (> a / A).  The pole stretch is then fixed by the force alone: the cap
+//                       carries f at the equator.
+// Coulomb slip on the hemisphere (the membrane slides away from the pole; friction mu p points to
+// it).  Not implemented: friction on the cylinder side (a contact that reaches it with mu > 0 is a
+// status, never a number) and a stick stage (validation_errors refuses the stick rules).
+#include <fmt/format.h>
+
+#include <array>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "indentation/contact/contact_model.hpp"
+#include "indentation/contact/flat_punch_side.hpp"
+#include "indentation/free_part.hpp"
+#include "indentation/membrane_fields.hpp"
+#include "mechanics/inverse_stretch.hpp"
+#include "numerics/interior_maximum.hpp"
+#include "numerics/shooting.hpp"
+
+namespace puncture::detail {
+
+struct SphereTippedSettings {
+  double a;   // tip (and cylinder) radius / clamp radius
+  double mu;  // Coulomb friction coefficient (on the hemisphere; the side only without)
+};
+
+// The cap: the membrane on the hemisphere of radius a, state (theta, lambda1, e) along the
+// reference radius R, theta the polar angle of the material point on the sphere (measured at the
+// sphere's centre from the axis; it is also the meridian's slope), e = int W R dR the stored
+// energy from the pole (/ (2 pi G H A^2)).  lambda2 = a sin(theta) / R.
+//   dtheta/dR = lambda1 / a                            the meridian lies on the sphere
+//   d(R s1)/dR = s2 cos(theta) + mu p r lambda1          tangential balance (Coulomb slip)
+//   dlambda2/dR = (lambda1 cos(theta) - lambda2) / R    (from lambda2 = a sin(theta) / R)
+// the second solved for lambda1' as in the free membrane (mechanics/free_membrane_ode.hpp).
+using SphereCapState = std::array<double, 3>;
+
+template <class Law>
+struct SphereCapSystem {
+  const Law& law;
+  double a;
+  double locking_i1;
+  double mu = 0.0;  // Coulomb slip: the membrane slides away from the pole, friction points to it
+
+  void operator()(const SphereCapState& x, SphereCapState& dx, double r_ref) const {
+    const double theta = x[0], l1 = x[1];
+    const double l2 = a * std::sin(theta) / r_ref;
+    if (!(l1 > 0.0) || !(l2 > 0.0)) throw IntegrationFailure{};
+    const auto st = membrane_stress(law, l1, l2);
+    if (!(st.i1 < locking_i1) || !(st.ds1_dl1 > 0.0) || !std::isfinite(st.ds1_dl1))
+      throw IntegrationFailure{};
+    const double dl2 = (l1 * std::cos(theta) - l2) / r_ref;
+    dx[0] = l1 / a;
+    // d(R s1)/dR = s2 cos(theta) + mu p r lambda1, p r lambda1 = sin(theta) (s1 l1 / l2 + s2).
+    const double tangential =
+        mu == 0.0 ? std::cos(theta) * st.s2
+                  : std::cos(theta) * st.s2 + mu * std::sin(theta) * (st.s1 * l1 / l2 + st.s2);
+    dx[1] = (tangential - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
+    dx[2] = law.derivatives(st.i1, second_invariant(l1, l2)).w * r_ref;
+  }
+};
+
+// The cap's state near the pole, from the series lambda1 = L + c R^2, lambda2 = L + e R^2,
+// theta = (L R + c R^3 / 3) / a (docs/model.md): the O(R^2) balance of the tangential equation
+// gives c = ((3 beta - alpha) L^3 - 3 s L^2) / (16 alpha a^2), e = c / 3 - L^3 / (6 a^2), with
+// s, alpha = ds1/dlambda1 and beta = ds1/dlambda2 at the equibiaxial stretch L.  The state at R
+// has an error O(R^4).
+//
+// With friction mu the slip traction adds mu 2 s L R / a to d(R s1)/dR at O(R): lambda1 gains
+// b R, lambda2 b R / 2, with b = 4 mu s L / (3 alpha a); the O(R^2) terms would need the stresses'
+// second derivatives, so the frictional start keeps the frictionless c and has an error O(R^2)
+// (the cap then starts closer to the pole).
+template <class Law>
+SphereCapState sphere_cap_pole_state(const Law& law, double a, double l, double r_ref,
+                                     double mu = 0.0) {
+  const auto st = membrane_stress(law, l, l);
+  const double alpha = st.ds1_dl1, beta = st.ds1_dl2, s = st.s1;
+  const double c = ((3.0 * beta - alpha) * l * l * l - 3.0 * s * l * l) / (16.0 * alpha * a * a);
+  const double w = law.derivatives(st.i1, second_invariant(l, l)).w;
+  if (mu != 0.0) {
+    const double b = 4.0 * mu * s * l / (3.0 * alpha * a);
+    return {(l * r_ref + 0.5 * b * r_ref * r_ref + c * r_ref * r_ref * r_ref / 3.0) / a,
+            l + b * r_ref + c * r_ref * r_ref,
+            0.5 * w * r_ref * r_ref};
+  }
+  // W R integrated from the pole: W(L, L) R^2 / 2 to the order of the start (W varies as R^2).
+  return {(l * r_ref + c * r_ref * r_ref * r_ref / 3.0) / a,
+          l + c * r_ref * r_ref,
+          0.5 * w * r_ref * r_ref};
+}
+
+// The samples of the parts in contact, stored in ScaledSolution::part_two, centre outwards:
+// (R, lambda1, psi) with psi = (length along the probe's profile from the pole) / a, so psi =
+// theta <= pi/2 on the hemisphere and psi = pi/2 + (height above the equator) / a on the side.
+
+template <class Law>
+class SphereTippedContact {
+ public:
+  using law_type = Law;
+  using Settings = SphereTippedSettings;
+
+  SphereTippedContact(const FreePart<Law>& part_one, const SphereTippedSettings& settings)
+      : part_one_(part_one),
+        law_(part_one.law()),
+        s_(settings),
+        locking_i1_(part_one.locking_i1()) {}
+
+  // The pole stretch exceeds 1.
+  double parameter_floor(Configuration) const { return 1.0; }
+
+  // Where the cap ends, marched from the pole with pole stretch `l` (the parameter).
+  struct CapEnd {
+    bool at_equator = false;  // the contact reached theta = pi/2 before carrying the force
+    double r = 0.0;           // reference radius of the contact edge (or of the equator)
+    SphereCapState state{};
+    double vertical = 0.0;  // R s1 sin(theta) there: the force the cap carries
+  };
+
+  // The cap from the pole until it carries the force f (R s1 sin(theta) = f: the contact edge)
+  // or reaches the equator (f = infinity: always the equator).  With `samples`, the cap is
+  // sampled (R, lambda1, theta); with `i1_max`, I1 is tracked along it.  Empty outside the
+  // material's domain.
+  std::optional<CapEnd> march(double l, double f, std::vector<PartTwoSample>* samples = nullptr,
+                              InteriorMaximum<SphereCapState>* i1_max = nullptr) const {
+    if (!(l > 0.0) || !std::isfinite(l) || !(first_invariant(l, l) < locking_i1_))
+      return std::nullopt;
+    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu};
+    // theta = kPoleStart there (closer with friction: that start is exact to O(R^2) only; the
+    // neglected terms are O((mu theta)^2) ~ 1e-10 mu^2 relative at theta = 1e-5)
+    const double r_start = (s_.mu == 0.0 ? kPoleStart : kPoleStartFriction) * s_.a / l;
+    SphereCapState y = sphere_cap_pole_state(law_, s_.a, l, r_start, s_.mu);
+    auto vertical = [&](double r, const SphereCapState& x) {
+      return r * membrane_stress(law_, x[1], s_.a * std::sin(x[0]) / r).s1 * std::sin(x[0]);
+    };
+    auto crossed = [&](double r, const SphereCapState& x) {
+      return x[0] >= kHalfPiCap || vertical(r, x) >= f;
+    };
+    double r_prev = r_start, r_hit = -1.0;
+    SphereCapState y_prev = y, y_hit = y;
+    IntegrationSettings integration = part_one_.settings().integration;
+    if (samples) {
+      const int n = std::max(1, part_one_.settings().field_points);
+      integration.max_step = s_.a / n;
+    }
+    if (samples) {
+      samples->clear();
+      samples->push_back({0.0, l, 0.0});
+    }
+    const bool ok = integrate_part(cap, y, r_start, 1.0, integration, [&](double r, const auto& x) {
+      if (r > r_start && crossed(r, x)) {
+        r_hit = r;
+        y_hit = x;
+        return false;
+      }
+      r_prev = r;
+      y_prev = x;
+      if (samples) samples->push_back({r, x[1], x[0]});
+      if (i1_max) i1_max->observe(r, x, first_invariant(x[1], s_.a * std::sin(x[0]) / r));
+      return true;
+    });
+    if (!ok || r_hit < 0.0) return std::nullopt;
+    // Inside the last step: the contact edge if the force is carried before the equator, else
+    // the equator.  Trials re-take one step from the last accepted state; one that leaves the
+    // material's domain counts as past the event.
+    const auto at = [&](double r) {
+      return step_or_advance(cap, y_prev, r_prev, r, part_one_.settings().integration);
+    };
+    // The root of event in (r_prev, r_end], negative at r_prev and >= 0 at r_end (states given):
+    // Newton's method kept inside the bracket (Boost's newton_raphson_iterate, with the event's
+    // derivative along the cap), or TOMS 748 if a trial leaves the material's domain or Newton
+    // gives up.
+    struct Event {
+      double value;
+      double slope;
+    };
+    auto locate = [&](auto&& event,
+                      double r_end,
+                      const SphereCapState& y_end,
+                      SphereCapState& y_root) -> std::optional<double> {
+      const double g_prev = event(r_prev, y_prev).value, g_end = event(r_end, y_end).value;
+      y_root = y_prev;
+      if (g_prev >= 0.0) return r_prev;
+      y_root = y_end;
+      if (!(g_end >= 0.0)) return std::nullopt;
+      if (g_end == 0.0) return r_end;
+      double r_root = 0.0;
+      try {
+        std::uintmax_t iterations = 60;
+        r_root = boost::math::tools::newton_raphson_iterate(
+            [&](double r) {
+              const auto x = at(r);
+              if (!x) throw IntegrationFailure{};
+              const Event e = event(r, *x);
+              return std::make_pair(e.value, e.slope);
+            },
+            r_prev + (r_end - r_prev) * g_prev / (g_prev - g_end),
+            r_prev,
+            r_end,
+            50,
+            iterations);
+      } catch (...) {  // IntegrationFailure, or Boost's evaluation_error (no root seen)
+        auto g = [&](double r) {
+          const auto x = at(r);
+          return x ? event(r, *x).value : 1.0;
+        };
+        std::uintmax_t iterations = 100;
+        const auto bracket =
+            boost::math::tools::toms748_solve(g,
+                                              r_prev,
+                                              r_end,
+                                              g_prev,
+                                              g_end,
+                                              boost::math::tools::eps_tolerance<double>(50),
+                                              iterations);
+        r_root = 0.5 * (bracket.first + bracket.second);
+      }
+      const auto x = at(r_root);
+      if (!x) return std::nullopt;
+      y_root = *x;
+      return r_root;
+    };
+    const auto equator = [&](double, const SphereCapState& x) {
+      return Event{x[0] - kHalfPiCap, x[1] / s_.a};
+    };
+    // V = R s1 sin(theta) - f, with dV/dR = cos(theta) (s2 sin(theta) + R s1 lambda1 / a) and,
+    // with friction, + mu sin(theta)^2 (s1 lambda1 / lambda2 + s2).
+    const auto edge = [&](double r, const SphereCapState& x) {
+      const double l2 = s_.a * std::sin(x[0]) / r;
+      const auto st = membrane_stress(law_, x[1], l2);
+      const double c = std::cos(x[0]), sn = std::sin(x[0]);
+      const double friction = s_.mu * sn * sn * (st.s1 * x[1] / l2 + st.s2);
+      return Event{r * st.s1 * sn - f, c * (st.s2 * sn + r * st.s1 * x[1] / s_.a) + friction};
+    };
+    // The search ends at the equator if the step passes it (R s1 sin(theta) peaks there: dV/dR
+    // carries a factor cos(theta)); the force is carried before the equator if V reaches f by
+    // the search's end.
+    double r_stop = r_hit;
+    SphereCapState y_stop = y_hit;
+    if (y_hit[0] >= kHalfPiCap) {
+      const auto r_equator = locate(equator, r_hit, y_hit, y_stop);
+      if (!r_equator) return std::nullopt;
+      r_stop = *r_equator;
+    }
+    std::optional<double> r_end = r_stop;
+    std::optional<SphereCapState> y_end = y_stop;
+    CapEnd end;
+    end.at_equator = true;
+    if (std::isfinite(f) && vertical(r_stop, y_stop) >= f) {
+      SphereCapState y_edge;
+      r_end = locate(edge, r_stop, y_stop, y_edge);
+      if (!r_end) return std::nullopt;
+      y_end = y_edge;
+      end.at_equator = false;
+    }
+    end.r = *r_end;
+    end.state = *y_end;
+    end.vertical = vertical(end.r, end.state);
+    if (samples) samples->push_back({end.r, end.state[1], end.state[0]});
+    if (i1_max)
+      i1_max->observe(
+          end.r, end.state, first_invariant(end.state[1], s_.a * std::sin(end.state[0]) / end.r));
+    return end;
+  }
+
+  std::optional<FreeStart> free_start(Configuration c, double f, double p) const {
+    if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
+    if (c == Configuration::SlipWithPartTwo) {
+      if (s_.mu != 0.0) return std::nullopt;  // friction on the side: not implemented
+      return side_top_start(f, p);
+    }
+    if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
+    const auto end = march(p, f);
+    if (!end) return std::nullopt;
+    if (end->at_equator) {
+      // Carried only at the equator: a vertical exit when the force is met there to round-off
+      // (the lower end of the shooting bracket), else the contact would wrap the side.
+      if (!(end->vertical >= f * (1.0 - 1e-9))) return std::nullopt;
+      return vertical_start(*end);
+    }
+    return edge_start(*end);
+  }
+
+  // The parts in contact once Part I is integrated from `st`: the cap re-marched from the pole
+  // (its largest I1, samples and height) and, past the equator, the side down from Part I's start
+  // to the equator.
+  bool attach(Configuration c, const FreeStart& st, double p, bool record,
+              ScaledSolution& sol) const {
+    if (c == Configuration::SlipWithPartTwo) return attach_with_side(st, record, sol);
+    InteriorMaximum<SphereCapState> i1_max;
+    const auto end = march(p, sol.f, record ? &sol.part_two : nullptr, &i1_max);
+    // Recorded, the cap is marched in shorter steps: its edge moves by the integration's error.
+    if (!end || (end->at_equator && st.slope != kHalfPiCap)) {
+      sol.status = Status::NoConvergence;
+      sol.message = "the contact edge on the sphere could not be located again";
+      return false;
+    }
+    track_cap_maximum(i1_max, p, sol);
+    sol.r_corner = st.r0;
+    sol.part_three_stretch = p;  // the pole's equibiaxial stretch (max_first_invariant_of)
+    sol.depth += cap_height(st.slope);
+    sol.tension_ratio = 1.0;
+    return true;
+  }
+
+  template <class Residual>
+  ShootingPlan plan(Stage stage, double f, Residual&& counted) const {
+    ShootingPlan plan;
+    plan.configuration = Configuration::SlipWithoutPartTwo;
+    if (stage == Stage::Stick) {
+      plan.configuration = Configuration::Stick;
+      plan.status = Status::OutsideModel;
+      plan.message = kStickNotImplemented;
+      return plan;
+    }
+    // The pole stretch at which the cap carries f exactly at the equator, and the clamp residual
+    // of Part I leaving the equator vertically there: negative while the contact stays on the
+    // hemisphere, >= 0 once it wraps the cylinder side.
+    const auto onset = equator_onset(f);
+    if (!onset) {
+      plan.status = Status::BeyondLocking;
+      plan.message =
+          "no pole stretch lets the sphere-tipped probe carry this force before the material locks";
+      return plan;
+    }
+    const double g_onset = side_indicator(f, *onset).value_or(kBeyondDomain);
+    if (g_onset >= 0.0 && s_.mu != 0.0) {
+      plan.configuration = Configuration::SlipWithPartTwo;
+      plan.status = Status::OutsideModel;
+      plan.message = kFrictionNotImplemented;
+      return plan;
+    }
+    if (g_onset >= 0.0) {
+      // The side exists: shoot on lambda2 where Part I leaves it, between a / A (the top at the
+      // clamp, residual a / A - 1 < 0) and the equator's lambda2.
+      plan.configuration = Configuration::SlipWithPartTwo;
+      // With a small probe (a << A) the top at the clamp needs a hoop stretch a / A so small that
+      // the material locks there: then tops from the equator's downward, 1 + (top - 1) / 2^k in
+      // lambda2 above a / A, until the residual is negative.
+      const double cap = s_.a / onset->end.r;
+      double lowest = s_.a * (1.0 + 1e-9);
+      double g_low = counted(Configuration::SlipWithPartTwo, lowest).value_or(kBeyondDomain);
+      for (int k = 1; k <= 50 && !(g_low < 0.0); ++k) {
+        const double p = s_.a + (cap - s_.a) / std::ldexp(1.0, k);
+        const auto g = counted(Configuration::SlipWithPartTwo, p);
+        if (g && *g < 0.0) {
+          lowest = p;
+          g_low = *g;
+        }
+      }
+      if (!(g_low < 0.0)) {
+        plan.status = Status::BeyondLocking;
+        plan.message = "the force is beyond what the membrane on the sphere-tipped probe can carry";
+        return plan;
+      }
+      plan.lo = lowest;
+      plan.g_lo = g_low;
+      plan.cap = cap;
+      plan.no_root_message =
+          "sphere-tipped shooting (contact on the side) found no top stretch meeting the clamp "
+          "condition";
+      return plan;
+    }
+    // The contact ends on the hemisphere.  The shooting needs a pole stretch whose cap carries f
+    // before the equator with a negative clamp residual: the onset's, unless R s1 sin(theta)
+    // peaks on the way (the hoop stretch falls below 1 towards the equator at small stretches)
+    // and reaches f earlier.  Then stretches 1 + (onset - 1) / 2^k are tried downward: any
+    // carrying one with a negative residual lies below the root and will do; past the lowest
+    // carrying stretch, a bisection on whether the force is carried before the equator finds it.
+    double hi = onset->stretch;
+    double g_hi = g_onset;
+    const auto carried = [&](double l) {
+      const auto end = march(l, f);
+      return end && !end->at_equator;
+    };
+    if (carried(hi * (1.0 - 1e-12))) {
+      double lo = 1.0;
+      bool bracketed = false;
+      for (int k = 1; k <= 60; ++k) {
+        const double l = 1.0 + (onset->stretch - 1.0) / std::ldexp(1.0, k);
+        if (!carried(l)) {
+          lo = l;
+          break;
+        }
+        hi = l;
+        g_hi = counted(Configuration::SlipWithoutPartTwo, l).value_or(kBeyondDomain);
+        if (g_hi < 0.0) {
+          bracketed = true;
+          break;
+        }
+      }
+      if (!bracketed) {
+        for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+          const double mid = 0.5 * (lo + hi);
+          (carried(mid) ? hi : lo) = mid;
+        }
+        g_hi = counted(Configuration::SlipWithoutPartTwo, hi).value_or(kBeyondDomain);
+      }
+      if (!(g_hi < 0.0)) {
+        plan.status = Status::NoConvergence;
+        plan.message =
+            "sphere-tipped shooting: no bracket of the pole stretch (the contact edge where the "
+            "cap's vertical force peaks already overshoots the clamp)";
+        return plan;
+      }
+    }
+    plan.lo = hi;
+    plan.g_lo = g_hi;
+    plan.cap = locking_radial_stretch(law_, 1.0);
+    plan.no_root_message =
+        "sphere-tipped shooting found no pole stretch meeting the clamp condition";
+    return plan;
+  }
+
+  // The flat membrane: all of it Part I, from the pole to the clamp.
+  ScaledSolution unloaded(bool record) const {
+    ScaledSolution flat;
+    flat.status = Status::Converged;
+    flat.configuration = Configuration::Unloaded;
+    if (record) {
+      const int n = std::max(1, part_one_.settings().field_points);
+      for (int k = 0; k <= n; ++k) {
+        const double r = k == n ? 1.0 : static_cast<double>(k) / n;
+        flat.part_one.push_back({r, 0.0, 1.0, 1.0, 0.0});
+      }
+    }
+    return flat;
+  }
+
+  Configuration configuration(Stage stage, bool past_change) const {
+    if (stage == Stage::Stick) return Configuration::Stick;
+    return past_change ? Configuration::SlipWithPartTwo : Configuration::SlipWithoutPartTwo;
+  }
+
+  // The state where the contact reaches the equator (the side of zero length), as the
+  // configuration with the side: its parameter is the equator's lambda2.  Empty if it never does
+  // before the material locks.
+  template <class Shooting>
+  std::optional<ScaledSolution> slip_change(const Shooting& shooting) const {
+    auto indicator = [&](double f) -> std::optional<double> {
+      const auto onset = equator_onset(f);
+      if (!onset) return std::nullopt;
+      return side_indicator(f, *onset);
+    };
+    const double f_probe = 1e-4;
+    const auto g0 = indicator(f_probe);
+    if (!g0 || *g0 >= 0.0) return std::nullopt;
+    const auto f_on = shoot_increasing(indicator,
+                                       f_probe,
+                                       *g0,
+                                       std::numeric_limits<double>::infinity(),
+                                       part_one_.settings().max_iterations,
+                                       0.01);
+    if (!f_on) return std::nullopt;
+    const auto onset = equator_onset(*f_on);
+    if (!onset) return std::nullopt;
+    auto sol = shooting.assemble(Configuration::SlipWithPartTwo, *f_on, s_.a / onset->end.r, false);
+    if (!sol.integrated) return std::nullopt;
+    return sol;
+  }
+
+  template <class Shooting>
+  std::optional<ScaledSolution> direct_puncture(const Shooting&, double) const {
+    return std::nullopt;
+  }
+
+  const Law& law() const { return law_; }
+
+  // Pole (the equibiaxial stretch is the largest I1), the cap, the side, or Part I.
+  LargestFirstInvariant largest_first_invariant(const ScaledSolution& sol) const {
+    if (pole_is_largest(sol)) return {MembranePart::Tip, 0.0, 0.0};
+    const bool with_side = sol.configuration == Configuration::SlipWithPartTwo;
+    const bool on_cap = sol.max_i1_r < sol.r_corner * (1.0 - kEdgeTol);
+    const bool on_side = with_side && !on_cap && sol.max_i1_r < sol.r_top * (1.0 - kEdgeTol);
+    return {on_cap    ? MembranePart::Tip
+            : on_side ? MembranePart::Side
+                      : MembranePart::Free,
+            sol.max_i1_r,
+            sol.max_i1_radius};
+  }
+
+  std::string crack_location(const ScaledSolution& sol) const {
+    if (pole_is_largest(sol)) return "the pole, under the tip of the sphere";
+    const bool with_side = sol.configuration == Configuration::SlipWithPartTwo;
+    if (std::abs(sol.max_i1_r - sol.r_top) <= kEdgeTol * sol.r_top)
+      return with_side ? "the top of the contact on the cylinder side, where the membrane leaves it"
+                       : "the contact edge, where the membrane leaves the sphere";
+    if (sol.max_i1_r < sol.r_corner) return "on the sphere, between the pole and the contact edge";
+    if (with_side && sol.max_i1_r < sol.r_top) return "on the cylinder side of the probe";
+    return "Part I, off the indenter";
+  }
+
+  // Part I starts at the contact edge, the cap's height above the pole, or at the top of the
+  // side.
+  double free_part_inner_height(const ScaledSolution& sol) const {
+    if (sol.configuration == Configuration::Unloaded) return 0.0;
+    if (sol.configuration == Configuration::SlipWithPartTwo) return s_.a + sol.part_two_length;
+    return cap_height(sol.corner_slope);
+  }
+
+  // The cap from the pole, then the side, with the contact pressure from normal balance.
+  void append_contact_fields(const ScaledSolution& sol, const FieldScales& u,
+                             MembraneFields& m) const {
+    const double big_a = u.clamp_radius_mm, g = u.shear_modulus_mpa;
+    const double depth = sol.depth * big_a;
+    for (const auto& sample : sol.part_two) {
+      const double r_ref = sample[0], l1 = sample[1], psi = sample[2];
+      const bool side = psi > kHalfPiCap;
+      const double radius = side ? s_.a : s_.a * std::sin(psi);
+      const double l2 = r_ref > 0.0 ? radius / r_ref : l1;
+      const auto st = membrane_stress(law_, l1, l2);
+      const double pressure = contact_pressure(l1, l2, st, side) * g * u.thickness_mm / big_a;
+      append_point(m,
+                   side ? MembranePart::Side : MembranePart::Tip,
+                   r_ref * big_a,
+                   radius * big_a,
+                   depth - profile_height(psi) * big_a,
+                   std::min(psi, kHalfPiCap),
+                   l1,
+                   l2,
+                   st,
+                   g,
+                   pressure,
+                   s_.mu * pressure);
+    }
+  }
+
+  // Normal balance: on the sphere p = (s1 / lambda2 + s2 / lambda1) / a (the true tensions over
+  // the sphere's radius, Laplace's law), on the cylinder p = s2 / (lambda1 a); normalised by
+  // G H / A.
+  double contact_pressure(double l1, double l2, const MembraneStress& st, bool side) const {
+    return ((side ? 0.0 : st.s1 / l2) + st.s2 / l1) / s_.a;
+  }
+
+  // Height above the pole of the point at polar angle theta on the hemisphere.
+  double cap_height(double theta) const { return s_.a * (1.0 - std::cos(theta)); }
+  // ... and of the profile point psi (sample coordinate): past pi/2, up the cylinder.
+  double profile_height(double psi) const {
+    return psi <= kHalfPiCap ? cap_height(psi) : s_.a * (1.0 + (psi - kHalfPiCap));
+  }
+
+  // The cap that carries f exactly at the equator: its pole stretch and its end.
+  struct EquatorOnset {
+    double stretch;
+    CapEnd end;
+  };
+  // V at the equator grows with the pole stretch.  The root is bracketed from the last onset
+  // found (the shooting and the depth Newton ask for nearby forces in turn), else from 1, and
+  // refined by TOMS 748 to a few ulps.
+  std::optional<EquatorOnset> equator_onset(double f) const {
+    auto g = [&](double l) -> std::optional<double> {
+      const auto end = march(l, std::numeric_limits<double>::infinity());
+      if (!end) return std::nullopt;
+      return end->vertical - f;
+    };
+    // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
+    // law without locking whose V at the equator stays below f at every stretch): far from f
+    // there, while a true root meets it to the integration's accuracy (absolute, at the tiny
+    // forces where V at the equator crosses zero: an unstretched pole leaves the cap in hoop
+    // compression towards the equator).
+    auto found = [&](double l) -> std::optional<EquatorOnset> {
+      const auto end = march(l, std::numeric_limits<double>::infinity());
+      if (!end || !(std::abs(end->vertical - f) <= 1e-3 * f + 1e-9)) return std::nullopt;
+      last_onset_ = {f, l};
+      return EquatorOnset{l, *end};
+    };
+    if (last_onset_.first == f) {
+      if (auto same = found(last_onset_.second)) return same;
+    }
+    std::optional<double> root;
+    if (const double l0 = last_onset_.second; l0 > 1.0) {
+      const auto g0 = g(l0);
+      if (g0 && *g0 < 0.0) {
+        root = shoot_increasing(g,
+                                l0,
+                                *g0,
+                                std::numeric_limits<double>::infinity(),
+                                part_one_.settings().max_iterations,
+                                1e-3 * (l0 - 1.0));
+      } else if (g0) {
+        // Step down towards 1 until V falls below f (V = 0 at 1).
+        double hi = l0, g_hi = *g0, step = 1e-3 * (l0 - 1.0), lo = l0;
+        std::optional<double> g_lo;
+        for (int k = 0; k < 60; ++k, step *= 2.0) {
+          lo = std::max(1.0, hi - step);
+          g_lo = lo == 1.0 ? std::optional<double>(-f) : g(lo);
+          if (g_lo && *g_lo < 0.0) break;
+          if (g_lo) {
+            hi = lo;
+            g_hi = *g_lo;
+          }
+        }
+        if (g_lo && *g_lo < 0.0) {
+          if (g_hi == 0.0) return found(hi);
+          std::uintmax_t iterations =
+              static_cast<std::uintmax_t>(part_one_.settings().max_iterations);
+          const auto bracket = boost::math::tools::toms748_solve(
+              [&](double l) { return g(l).value_or(kBeyondDomain); },
+              lo,
+              hi,
+              *g_lo,
+              g_hi,
+              [](double x0, double x1) {
+                return std::abs(x1 - x0) <=
+                       4.0 * std::numeric_limits<double>::epsilon() * std::abs(x1);
+              },
+              iterations);
+          root = 0.5 * (bracket.first + bracket.second);
+        }
+      }
+    }
+    if (root) {
+      if (auto warm = found(*root)) return warm;
+    }
+    // From the flat membrane (also when the warm start's bracket ends where the march fails).
+    const double cap = locking_radial_stretch(law_, 1.0);
+    root = shoot_increasing(
+        g, 1.0, -f, cap, part_one_.settings().max_iterations, std::isfinite(cap) ? 0.0 : 0.05);
+    if (!root) return std::nullopt;
+    return found(*root);
+  }
+  // Pole stretch of the onset, for the tests.
+  std::optional<double> equator_onset_stretch(double f) const {
+    const auto onset = equator_onset(f);
+    return onset ? std::optional<double>(onset->stretch) : std::nullopt;
+  }
+
+  // Clamp residual of Part I leaving the equator vertically at force f (Part II of zero length):
+  // the same whether counted as the cap's end or the side's top.  Empty past locking.
+  std::optional<double> side_indicator(double f, const EquatorOnset& onset) const {
+    return part_one_.residual(f, side_top_start(f, s_.a / onset.end.r));
+  }
+
+  const SphereTippedSettings& settings() const { return s_; }
+
+  static constexpr const char* kFrictionNotImplemented =
+      "outside the sphere-tipped model: the contact reaches the cylinder side, where friction is "
+      "not implemented yet (friction on the hemisphere is; without friction the side is solved)";
+  static constexpr const char* kStickNotImplemented =
+      "the stick stage on the sphere-tipped probe is not implemented yet: only sliding (stick "
+      "rule none) is solved";
+
+ private:
+  // Where the cap starts: the polar angle there (the series' error, O((L R / a)^4) = 1e-16,
+  // is far below the integration's tolerance).
+  static constexpr double kPoleStart = 1e-4;
+  static constexpr double kPoleStartFriction = 1e-5;
+  static constexpr double kHalfPiCap = boost::math::constants::half_pi<double>();
+  static constexpr double kEdgeTol = 1e-9;
+
+  bool pole_is_largest(const ScaledSolution& sol) const {
+    const double l = sol.part_three_stretch;
+    return first_invariant(l, l) >= sol.max_i1 * (1.0 - 1e-12);
+  }
+
+  // Part I leaving the side vertically at R = a / p: R s1 = f, t = 0.
+  std::optional<FreeStart> side_top_start(double f, double p) const {
+    if (!(p > s_.a)) return std::nullopt;  // the top must lie inside the clamp
+    const auto l1 = invert_radial_stress(law_, f * p / s_.a, p);
+    if (!l1) return std::nullopt;
+    return FreeStart{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPiCap, 1.0};
+  }
+
+  // Part I leaving the sphere tangentially at the contact edge: slope theta, t = R s1 cos(theta).
+  FreeStart edge_start(const CapEnd& end) const {
+    const double theta = end.state[0], l1 = end.state[1];
+    const double l2 = s_.a * std::sin(theta) / end.r;
+    const double t = end.vertical / std::tan(theta);  // R s1 cos(theta), R s1 sin(theta) = f
+    return FreeStart{{t, l1, l2, 0.0}, end.r, theta, 1.0};
+  }
+  // Part I leaving the equator vertically (t = 0).
+  FreeStart vertical_start(const CapEnd& end) const {
+    const double l1 = end.state[1], l2 = s_.a / end.r;
+    return FreeStart{{0.0, l1, l2, 0.0}, end.r, kHalfPiCap, 1.0};
+  }
+
+  // The cap's largest I1 (refined between samples) into the solution's, if it is larger.
+  void track_cap_maximum(const InteriorMaximum<SphereCapState>& i1_max, double,
+                         ScaledSolution& sol) const {
+    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu};
+    auto cap_i1 = [&](double r, const SphereCapState& y) {
+      return first_invariant(y[1], s_.a * std::sin(y[0]) / r);
+    };
+    auto found = i1_max.sampled();
+    try {
+      IntegrationStepper<SphereCapState> rk;
+      found = i1_max.refine(
+          [&](double ra, const SphereCapState& ya, double rb) {
+            SphereCapState out;
+            rk.do_step(cap, ya, ra, out, rb - ra);
+            return out;
+          },
+          cap_i1);
+    } catch (const IntegrationFailure&) {
+    }
+    if (found.value > sol.max_i1) {
+      sol.max_i1 = found.value;
+      sol.max_i1_r = found.r;
+      sol.max_i1_radius = s_.a * std::sin(found.state[0]);
+    }
+  }
+
+  // Contact past the equator: the cap is the one that carries f at the equator; the side, where
+  // R s1 = f, runs from Part I's start down to the equator (the flat punch's Part II without
+  // friction, which also gives its length).
+  bool attach_with_side(const FreeStart& st, bool record, ScaledSolution& sol) const {
+    const double f = sol.f;
+    const auto onset = equator_onset(f);
+    if (!onset || !(st.r0 >= onset->end.r * (1.0 - 1e-12))) {
+      sol.status = Status::NoConvergence;
+      sol.message = onset ? "the top of the side contact lies below the hemisphere's equator"
+                          : "no pole stretch lets the cap carry the force at the equator";
+      return false;
+    }
+    const double r_eq = std::min(onset->end.r, st.r0);
+    InteriorMaximum<SphereCapState> i1_max;
+    std::vector<PartTwoSample> cap_samples;
+    const auto end = march(onset->stretch,
+                           std::numeric_limits<double>::infinity(),
+                           record ? &cap_samples : nullptr,
+                           &i1_max);
+    if (!end) {
+      sol.status = Status::NoConvergence;
+      sol.message = "the cap up to the equator could not be integrated again";
+      return false;
+    }
+    track_cap_maximum(i1_max, onset->stretch, sol);
+    // The side, from Part I's start down to the equator.
+    const PartTwoSystem<Law> side{law_, s_.a, 0.0, PartTwoEquation::RingBalance, locking_i1_};
+    PartTwoState y{st.state[1], 0.0};
+    InteriorMaximum<PartTwoState> side_max;
+    std::vector<PartTwoSample> side_samples;
+    IntegrationSettings integration = part_one_.settings().integration;
+    if (record) integration.max_step = s_.a / std::max(1, part_one_.settings().field_points);
+    bool ok = true;
+    if (st.r0 > r_eq) {
+      ok = integrate_part(side, y, st.r0, r_eq, integration, [&](double r, const PartTwoState& x) {
+        if (record) side_samples.push_back({r, x[0], x[1]});
+        side_max.observe(r, x, first_invariant(x[0], s_.a / r));
+        return true;
+      });
+    }
+    if (!ok) {
+      sol.status = Status::BeyondLocking;
+      sol.message = "the membrane on the probe's side reaches the locking stretch";
+      return false;
+    }
+    try {
+      IntegrationStepper<PartTwoState> rk;
+      const auto found = side_max.refine(
+          [&](double ra, const PartTwoState& ya, double rb) {
+            PartTwoState out;
+            rk.do_step(side, ya, ra, out, rb - ra);
+            return out;
+          },
+          [&](double r, const PartTwoState& x) { return first_invariant(x[0], s_.a / r); });
+      if (found.value > sol.max_i1) {
+        sol.max_i1 = found.value;
+        sol.max_i1_r = found.r;
+        sol.max_i1_radius = s_.a;
+      }
+    } catch (const IntegrationFailure&) {
+    }
+    const double length = y[1];  // current length of the side
+    if (record) {
+      sol.part_two = std::move(cap_samples);
+      // The side's samples were taken downward; psi = pi/2 + (height above the equator) / a.
+      for (auto it = side_samples.rbegin(); it != side_samples.rend(); ++it)
+        sol.part_two.push_back({(*it)[0], (*it)[1], kHalfPiCap + (length - (*it)[2]) / s_.a});
+    }
+    sol.r_corner = r_eq;
+    sol.part_three_stretch = onset->stretch;
+    sol.part_two_length = length;
+    sol.depth += s_.a + length;
+    sol.tension_ratio = 1.0;
+    return true;
+  }
+
+  const FreePart<Law>& part_one_;
+  const Law& law_;
+  SphereTippedSettings s_;
+  double locking_i1_;
+  // The last equator onset found (force, pole stretch): a warm start for the next (one solve
+  // runs single-threaded on its own contact model).
+  mutable std::pair<double, double> last_onset_{-1.0, 0.0};
+};
+
+}  // namespace puncture::detail
