@@ -7,7 +7,7 @@
 //
 // This file: the helpers the calibrations share (bind_calibration.hpp), Inversion and ScanSample,
 // and bind_calibration, which registers each calibration (bind_critical_i1.cpp, bind_friction.cpp,
-// bind_jlim.cpp, bind_uniaxial_fit.cpp, bind_band.cpp).
+// bind_j_lim.cpp, bind_uniaxial_fit.cpp, bind_band.cpp).
 #include "bind_calibration.hpp"
 
 #include <fmt/format.h>
@@ -103,7 +103,7 @@ void bind_calibration(py::module_& m) {
   calibration::bind_critical_i1(m);
   calibration::bind_inversions(m);
   calibration::bind_friction(m);
-  calibration::bind_jlim(m);
+  calibration::bind_j_lim(m);
   calibration::bind_uniaxial(m);
   calibration::bind_band(m);
 }

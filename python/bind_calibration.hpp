@@ -1,6 +1,6 @@
 #pragma once
 // Shared pieces of the calibration bindings (bind_calibration.cpp, bind_critical_i1.cpp,
-// bind_friction.cpp, bind_jlim.cpp, bind_uniaxial_fit.cpp, bind_band.cpp): the errors raised as
+// bind_friction.cpp, bind_j_lim.cpp, bind_uniaxial_fit.cpp, bind_band.cpp): the errors raised as
 // the CLI reports them, the checks of the arguments, and each file's registration function, which
 // bind_calibration calls.
 #include <fmt/format.h>
@@ -51,7 +51,7 @@ std::optional<double> value_of(const Inversion& i);
 void bind_critical_i1(py::module_& m);  // bind_critical_i1.cpp
 void bind_inversions(py::module_& m);   // Inversion and ScanSample, shared by the next two
 void bind_friction(py::module_& m);     // bind_friction.cpp
-void bind_jlim(py::module_& m);         // bind_jlim.cpp
+void bind_j_lim(py::module_& m);         // bind_j_lim.cpp
 void bind_uniaxial(py::module_& m);     // bind_uniaxial_fit.cpp
 void bind_band(py::module_& m);         // bind_band.cpp
 

@@ -157,13 +157,13 @@ std::string run_jlim(const CLI::App& app, const ProblemFlags& pf, const Calibrat
   try {
     Progress progress("calibrate jlim");
     progress.note("J_lim for the measured force");
-    report.estimate = jlim_from_puncture_force(report.problem, f.puncture_force_n);
+    report.estimate = j_lim_from_puncture_force(report.problem, f.puncture_force_n);
     if (force_sd) {
       progress.note("J_lim for the force +- sd");
       report.force_plus_sd =
-          jlim_from_puncture_force(report.problem, f.puncture_force_n + f.puncture_force_sd_n);
+          j_lim_from_puncture_force(report.problem, f.puncture_force_n + f.puncture_force_sd_n);
       report.force_minus_sd =
-          jlim_from_puncture_force(report.problem, f.puncture_force_n - f.puncture_force_sd_n);
+          j_lim_from_puncture_force(report.problem, f.puncture_force_n - f.puncture_force_sd_n);
     }
     if (i1_sd) {
       progress.note("J_lim for the critical I1 +- sd");
@@ -171,8 +171,8 @@ std::string run_jlim(const CLI::App& app, const ProblemFlags& pf, const Calibrat
       plus.critical_i1 += f.critical_i1_sd;
       Problem minus = report.problem;
       minus.critical_i1 -= f.critical_i1_sd;
-      report.i1_plus_sd = jlim_from_puncture_force(plus, f.puncture_force_n);
-      report.i1_minus_sd = jlim_from_puncture_force(minus, f.puncture_force_n);
+      report.i1_plus_sd = j_lim_from_puncture_force(plus, f.puncture_force_n);
+      report.i1_minus_sd = j_lim_from_puncture_force(minus, f.puncture_force_n);
     }
   } catch (const std::invalid_argument& e) {
     rethrow_as_input(e);

@@ -147,7 +147,7 @@ struct JLimEstimate {
 
 // `problem` must have the Gent law (its J_lim is ignored).  Throws std::invalid_argument for an
 // invalid problem, another law, or a force that is not finite and > 0.
-JLimEstimate jlim_from_puncture_force(const Problem& problem, double puncture_force_n,
+JLimEstimate j_lim_from_puncture_force(const Problem& problem, double puncture_force_n,
                                       const JLimOptions& options = {});
 
 // ---------------------------------------------------------------------------------------------

@@ -11,7 +11,7 @@ moduli and stresses in MPa.
     puncture.plots.loading_curve(curve, "curve.png")  # matplotlib figures (puncture.plots)
 
 The calibrations of the CLI's `calibrate` and `fit` commands: critical_i1_from_inflation,
-friction_from_hole, jlim_from_puncture_force, fit_uniaxial (with uniaxial_points and
+friction_from_hole, j_lim_from_puncture_force, fit_uniaxial (with uniaxial_points and
 uniaxial_points_from_csv), and puncture_band, the puncture force over the parameters' intervals:
 
     band = puncture.puncture_band(problem, critical_i1=puncture.plus_minus(95.2, 4.8))
@@ -87,7 +87,7 @@ from ._puncture import (
     fit_uniaxial,
     force_scale_n,
     friction_from_hole,
-    jlim_from_puncture_force,
+    j_lim_from_puncture_force,
     loading_curve,
     plus_minus,
     predict_puncture,
@@ -152,7 +152,7 @@ __all__ = [
     "fit_uniaxial",
     "force_scale_n",
     "friction_from_hole",
-    "jlim_from_puncture_force",
+    "j_lim_from_puncture_force",
     "loading_curve",
     "plots",
     "plus_minus",

@@ -161,8 +161,8 @@ def test_friction_errors_match_cli(cli):
 
 # ----- J_lim from a puncture force ----------------------------------------------------------
 
-def test_jlim_matches_cli(cli):
-    e = pu.jlim_from_puncture_force(pu.Problem(), 0.7)
+def test_j_lim_matches_cli(cli):
+    e = pu.j_lim_from_puncture_force(pu.Problem(), 0.7)
     c = cli.json("calibrate", "jlim", "--puncture-force", "0.7")["estimate"]
     assert same(e.j_lim.value, c["j_lim"]["value"])
     assert list(e.j_lim.solutions) == c["j_lim"]["solutions"]
@@ -172,29 +172,29 @@ def test_jlim_matches_cli(cli):
     assert [s.model for s in e.scan] == [s["puncture_force_n"] for s in c["scan"]]
 
 
-def test_jlim_recovered_from_a_predicted_force():
+def test_j_lim_recovered_from_a_predicted_force():
     # The default membrane's predicted force has J_lim = 125; the inversion (1e-10 in log space,
     # each force to ~1e-8) gives it back to far better than 1e-6 relative.
     force = pu.predict_puncture(pu.Problem()).force_n
-    e = pu.jlim_from_puncture_force(pu.Problem(material=pu.Material.gent(j_lim=300)), force)
+    e = pu.j_lim_from_puncture_force(pu.Problem(material=pu.Material.gent(j_lim=300)), force)
     assert e.j_lim.value == pytest.approx(125.0, rel=1e-6)
     assert e.puncture.force_n == pytest.approx(force, rel=1e-8)
 
 
-def test_jlim_errors_match_cli(cli):
+def test_j_lim_errors_match_cli(cli):
     rc, message = cli_error(cli, "calibrate", "jlim", "--puncture-force", "0.1")
     assert rc == 2
     with pytest.raises(pu.SolverError) as info:
-        pu.jlim_from_puncture_force(pu.Problem(), 0.1)
+        pu.j_lim_from_puncture_force(pu.Problem(), 0.1)
     assert str(info.value) == message
     rc, message = cli_error(cli, "calibrate", "jlim", "--puncture-force", "0")
     with pytest.raises(ValueError) as info:
-        pu.jlim_from_puncture_force(pu.Problem(), 0.0)
+        pu.j_lim_from_puncture_force(pu.Problem(), 0.0)
     assert str(info.value) == "puncture_force_n: " + without_flag(message)
     with pytest.raises(ValueError, match="^material: J_lim is a parameter of the Gent law"):
-        pu.jlim_from_puncture_force(pu.Problem(material=pu.Material.neo_hookean()), 0.7)
+        pu.j_lim_from_puncture_force(pu.Problem(material=pu.Material.neo_hookean()), 0.7)
     with pytest.raises(ValueError, match="^invalid input:\n  critical_i1: "):
-        pu.jlim_from_puncture_force(pu.Problem(critical_i1=2.0), 0.7)
+        pu.j_lim_from_puncture_force(pu.Problem(critical_i1=2.0), 0.7)
 
 
 # ----- uniaxial fit -------------------------------------------------------------------------

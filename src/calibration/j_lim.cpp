@@ -17,7 +17,7 @@ double j_lim_of(double i1_excess, double u) { return i1_excess * (1.0 + std::exp
 
 }  // namespace
 
-JLimEstimate jlim_from_puncture_force(const Problem& problem, double puncture_force_n,
+JLimEstimate j_lim_from_puncture_force(const Problem& problem, double puncture_force_n,
                                       const JLimOptions& options) {
   if (!std::holds_alternative<Gent>(problem.material.law))
     throw InvalidInput("material.law",

@@ -1,5 +1,5 @@
 // Gent J_lim from one puncture force (include/puncture/calibration.hpp): JLimEstimate and
-// jlim_from_puncture_force.
+// j_lim_from_puncture_force.
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
@@ -12,7 +12,7 @@
 
 namespace puncture::python::calibration {
 
-void bind_jlim(py::module_& m) {
+void bind_j_lim(py::module_& m) {
   py::class_<JLimEstimate>(m, "JLimEstimate", "Gent J_lim from one puncture force")
       .def_readonly("force_n", &JLimEstimate::force_n)
       .def_readonly("j_lim", &JLimEstimate::j_lim, "Inversion")
@@ -26,13 +26,13 @@ void bind_jlim(py::module_& m) {
       .def_readonly("scan", &JLimEstimate::scan, "(J_lim, predicted puncture force [N])");
 
   m.def(
-      "jlim_from_puncture_force",
+      "j_lim_from_puncture_force",
       [](const Problem& problem,
          double puncture_force_n,
          const std::optional<SolverOptions>& options) {
         if (!std::holds_alternative<Gent>(problem.material.law))
           throw py::value_error(fmt::format(
-              "material: J_lim is a parameter of the Gent law; jlim_from_puncture_force needs "
+              "material: J_lim is a parameter of the Gent law; j_lim_from_puncture_force needs "
               "a Gent material, got {}",
               law_name(problem.material.law)));
         check_problem(problem, Unknown::JLim);
@@ -42,7 +42,7 @@ void bind_jlim(py::module_& m) {
         JLimEstimate e;
         as_value_error([&] {
           py::gil_scoped_release release;
-          e = jlim_from_puncture_force(problem, puncture_force_n, o);  // ignores its J_lim
+          e = j_lim_from_puncture_force(problem, puncture_force_n, o);  // ignores its J_lim
         });
         if (!e.j_lim.ok()) raise_solver_error(e.j_lim.message, e.j_lim.message);
         return e;

@@ -38,7 +38,7 @@ TEST(JLimFromPunctureForce, RecoversJLim) {
   for (const auto& [problem, j_lim] :
        {std::pair{lubricated, 110.0}, std::pair{dry, 125.0}, std::pair{lubricated, 400.0}}) {
     const double force = puncture_force(problem, j_lim);
-    const auto e = jlim_from_puncture_force(problem, force);
+    const auto e = j_lim_from_puncture_force(problem, force);
     ASSERT_TRUE(e.j_lim.ok()) << e.j_lim.message;
     EXPECT_NEAR(e.j_lim.value, j_lim, kRecoveryTol * j_lim);
     EXPECT_EQ(e.j_lim.solutions.size(), 1u);
@@ -61,7 +61,7 @@ TEST(JLimFromPunctureForce, NoisyForcesMoveJLimTheRightWay) {
   coarse.points_per_decade = 2;  // one root: any grid brackets it
   for (int draw = 0; draw < 3; ++draw) {
     const double force = exact * (1.0 + noise());
-    const auto e = jlim_from_puncture_force(p, force, coarse);
+    const auto e = j_lim_from_puncture_force(p, force, coarse);
     ASSERT_TRUE(e.j_lim.ok()) << e.j_lim.message;
     // The predicted force falls as J_lim grows.
     if (force > exact)
@@ -77,32 +77,32 @@ TEST(JLimFromPunctureForce, ReportsForcesOutOfReach) {
   JLimOptions coarse;
   coarse.points_per_decade = 2;
   // Below the neo-Hookean force (J_lim -> infinity), 0.231 N for the default membrane.
-  const auto low = jlim_from_puncture_force(p, 0.2, coarse);
+  const auto low = j_lim_from_puncture_force(p, 0.2, coarse);
   EXPECT_FALSE(low.j_lim.ok());
   EXPECT_TRUE(low.j_lim.solutions.empty());
   EXPECT_NE(low.j_lim.message.find("neo-Hookean"), std::string::npos) << low.j_lim.message;
   EXPECT_NEAR(low.neo_hookean_force_n, 0.231, 0.001);
   // Above what any J_lim above critical I1 - 3 gives.
-  const auto high = jlim_from_puncture_force(p, 1e7, coarse);
+  const auto high = j_lim_from_puncture_force(p, 1e7, coarse);
   EXPECT_FALSE(high.j_lim.ok());
   EXPECT_NE(high.j_lim.message.find("above"), std::string::npos) << high.j_lim.message;
   // Above the neo-Hookean force but beyond the J_lim searched.
   JLimOptions short_scan = coarse;
   short_scan.max_gap = 10.0;  // J_lim up to 11 (I1c - 3) = 1014
-  const auto beyond = jlim_from_puncture_force(p, 0.235, short_scan);
+  const auto beyond = j_lim_from_puncture_force(p, 0.235, short_scan);
   EXPECT_FALSE(beyond.j_lim.ok());
   EXPECT_NE(beyond.j_lim.message.find("larger still"), std::string::npos) << beyond.j_lim.message;
 }
 
 TEST(JLimFromPunctureForce, RefusesInvalidInput) {
   Problem p;
-  EXPECT_THROW(jlim_from_puncture_force(p, 0.0), std::invalid_argument);
-  EXPECT_THROW(jlim_from_puncture_force(p, NAN), std::invalid_argument);
+  EXPECT_THROW(j_lim_from_puncture_force(p, 0.0), std::invalid_argument);
+  EXPECT_THROW(j_lim_from_puncture_force(p, NAN), std::invalid_argument);
   p.material.law = NeoHookean{};
-  EXPECT_THROW(jlim_from_puncture_force(p, 0.7), std::invalid_argument);
+  EXPECT_THROW(j_lim_from_puncture_force(p, 0.7), std::invalid_argument);
   Problem low_i1;
   low_i1.critical_i1 = 2.0;
-  EXPECT_THROW(jlim_from_puncture_force(low_i1, 0.7), std::invalid_argument);
+  EXPECT_THROW(j_lim_from_puncture_force(low_i1, 0.7), std::invalid_argument);
 }
 
 // The unknown's own value is ignored, every other parameter is still checked.
@@ -124,10 +124,10 @@ TEST(ValidationOfTheUnknown, IgnoresOnlyTheCalibratedParameter) {
   p.geometry.thickness_mm = -1.0;
   EXPECT_EQ(parameters(validation_errors(p, Unknown::JLim)),
             (std::vector<std::string>{"geometry.thickness_mm", "friction"}));
-  EXPECT_THROW(jlim_from_puncture_force(p, 0.7), InvalidInput);
+  EXPECT_THROW(j_lim_from_puncture_force(p, 0.7), InvalidInput);
   p.geometry.thickness_mm = 0.2;
   p.friction = 0.18;
-  EXPECT_NO_THROW(jlim_from_puncture_force(p, 0.7));  // J_lim 125 is ignored
+  EXPECT_NO_THROW(j_lim_from_puncture_force(p, 0.7));  // J_lim 125 is ignored
 }
 
 }  // namespace
