@@ -51,7 +51,7 @@ std::optional<double> value_of(const Inversion& i);
 void bind_critical_i1(py::module_& m);  // bind_critical_i1.cpp
 void bind_inversions(py::module_& m);   // Inversion and ScanSample, shared by the next two
 void bind_friction(py::module_& m);     // bind_friction.cpp
-void bind_j_lim(py::module_& m);         // bind_j_lim.cpp
+void bind_j_lim(py::module_& m);        // bind_j_lim.cpp
 void bind_uniaxial(py::module_& m);     // bind_uniaxial_fit.cpp
 void bind_band(py::module_& m);         // bind_band.cpp
 

@@ -148,7 +148,7 @@ struct JLimEstimate {
 // `problem` must have the Gent law (its J_lim is ignored).  Throws std::invalid_argument for an
 // invalid problem, another law, or a force that is not finite and > 0.
 JLimEstimate j_lim_from_puncture_force(const Problem& problem, double puncture_force_n,
-                                      const JLimOptions& options = {});
+                                       const JLimOptions& options = {});
 
 // ---------------------------------------------------------------------------------------------
 // Least-squares fit of a uniaxial tensile test (§4.1, Fig. 11): nominal stress

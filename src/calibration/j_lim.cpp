@@ -18,7 +18,7 @@ double j_lim_of(double i1_excess, double u) { return i1_excess * (1.0 + std::exp
 }  // namespace
 
 JLimEstimate j_lim_from_puncture_force(const Problem& problem, double puncture_force_n,
-                                      const JLimOptions& options) {
+                                       const JLimOptions& options) {
   if (!std::holds_alternative<Gent>(problem.material.law))
     throw InvalidInput("material.law",
                        fmt::format("J_lim is a parameter of the Gent law; the material is {}",
