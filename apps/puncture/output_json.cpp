@@ -3,7 +3,6 @@
 #include "finite.hpp"
 #include "json_helpers.hpp"
 #include "output.hpp"
-#include "part_two_onset.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/material.hpp"
 #include "tables.hpp"
@@ -63,10 +62,10 @@ json curve_json(const CurveReport& r) {
     stick_slip["force_sliding_n"] = finite(c.stick_slip.force_sliding_n, "force after the switch");
   }
   json part_two = nullptr;
-  if (const auto onset = part_two_onset(c))
-    part_two = {{"depth_mm", finite(onset->depth_mm, "Part II onset depth")},
-                {"force_n", finite(onset->force_n, "Part II onset force")},
-                {"at_stick_slip_switch", onset->at_switch}};
+  if (c.part_two_onset_depth_mm && c.part_two_onset_force_n)
+    part_two = {{"depth_mm", finite(*c.part_two_onset_depth_mm, "Part II onset depth")},
+                {"force_n", finite(*c.part_two_onset_force_n, "Part II onset force")},
+                {"at_stick_slip_switch", c.part_two_onset_at_switch}};
   json out = {{"points_requested", r.points_requested},
               {"max_depth_mm", nullptr},
               {"stick_slip", stick_slip},

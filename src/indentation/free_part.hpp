@@ -73,18 +73,9 @@ class FreePart {
     // towards the axis: it belongs to the negative side of the clamp residual as well.
     if (!run.ok && last_l2 < 1.0) run.turned_back = true;
     if (run.ok) {
-      IntegrationStepper<PartOneState> rk;
-      auto found = i1_max.sampled();
-      try {
-        found = i1_max.refine(
-            [&](double ra, const PartOneState& xa, double rb) {
-              PartOneState out;
-              rk.do_step(system, xa, ra, out, rb - ra);
-              return out;
-            },
-            [](double, const PartOneState& y) { return first_invariant(y[1], y[2]); });
-      } catch (const IntegrationFailure&) {
-      }
+      const auto found = refined_maximum(i1_max, system, [](double, const PartOneState& y) {
+        return first_invariant(y[1], y[2]);
+      });
       run.max_i1 = found.value;
       run.max_i1_r = found.r;
       run.max_i1_radius = found.state[2] * found.r;  // r = lambda2 R

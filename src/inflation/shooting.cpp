@@ -72,20 +72,9 @@ class InflationShooter {
     }
     result.end = x;
     if (out) {
-      auto found = i1_max.sampled();
-      try {
-        IntegrationStepper<InflationOdeState> rk;
-        found = i1_max.refine(
-            [&](double ra, const InflationOdeState& xa, double rb) {
-              InflationOdeState y;
-              rk.do_step(system, xa, ra, y, rb - ra);
-              return y;
-            },
-            [](double, const InflationOdeState& y) {
-              return first_invariant(Layout::lambda1(y), Layout::lambda2(y));
-            });
-      } catch (const IntegrationFailure&) {
-      }
+      const auto found = refined_maximum(i1_max, system, [](double, const InflationOdeState& y) {
+        return first_invariant(Layout::lambda1(y), Layout::lambda2(y));
+      });
       const double pole_i1 = first_invariant(l0, l0);
       if (pole_i1 >= found.value) {
         out->max_i1 = pole_i1;

@@ -7,6 +7,8 @@
 #include <limits>
 #include <utility>
 
+#include "numerics/integrate.hpp"
+
 namespace puncture::detail {
 
 template <class State>
@@ -64,5 +66,25 @@ class InteriorMaximum {
   State best_state_{}, before_state_{}, last_state_{};
   bool has_before_ = false, has_after_ = false, has_last_ = false, just_set_ = false;
 };
+
+// The largest value(r, x) along a part integrated with `system`: refined between the samples by
+// re-taking each adjacent step as one Runge-Kutta step; the sampled maximum when a re-taken step
+// leaves the material's domain.
+template <class State, class System, class Value>
+typename InteriorMaximum<State>::Maximum refined_maximum(const InteriorMaximum<State>& samples,
+                                                         const System& system, Value&& value) {
+  try {
+    IntegrationStepper<State> rk;
+    return samples.refine(
+        [&](double ra, const State& xa, double rb) {
+          State out;
+          rk.do_step(system, xa, ra, out, rb - ra);
+          return out;
+        },
+        value);
+  } catch (const IntegrationFailure&) {
+    return samples.sampled();
+  }
+}
 
 }  // namespace puncture::detail

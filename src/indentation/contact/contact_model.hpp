@@ -39,8 +39,10 @@
 // Adding an indenter: a contact model with these members, an alternative in the dispatch
 // (indentation/dispatch.hpp); the shooting and the loading-curve driver are unchanged.
 #include <limits>
+#include <optional>
 #include <string>
 
+#include "numerics/shooting.hpp"
 #include "puncture/equilibrium.hpp"
 
 namespace puncture::detail {
@@ -64,5 +66,18 @@ struct ShootingPlan {
   std::string no_root_message;  // what to say when the bracketing finds no root
   bool ok() const { return status == Status::Converged; }
 };
+
+// The force at which a contact changes configuration (slip_change): the first root of an
+// onset indicator, negative at small forces, found by bracketing upward from a force far below
+// any onset (1e-4 of the force scale) with the given relative step.  Empty when the indicator is
+// not negative there or no root is bracketed.
+template <class Indicator>
+std::optional<double> onset_force(Indicator&& indicator, int max_iterations, double step) {
+  const double f_probe = 1e-4;
+  const auto g0 = indicator(f_probe);
+  if (!g0 || *g0 >= 0.0) return std::nullopt;
+  return shoot_increasing(
+      indicator, f_probe, *g0, std::numeric_limits<double>::infinity(), max_iterations, step);
+}
 
 }  // namespace puncture::detail

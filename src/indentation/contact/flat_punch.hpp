@@ -223,7 +223,6 @@ class FlatPunchContact {
       }
     }
     const PartTwoState corner = *corner_state;
-    IntegrationStepper<PartTwoState> rk;
     if (record) sol.part_two.push_back({r_corner, corner[0], corner[1]});
     // I1 along Part II: at the accepted steps and at the corner.
     auto track = [&](double r, double i1) {  // on the side: current radius a
@@ -234,18 +233,10 @@ class FlatPunchContact {
       }
     };
     track(r_corner, first_invariant(corner[0], s_.a / r_corner));
-    try {
-      const auto [i1, r, state] = side_max.refine(
-          [&](double ra, const PartTwoState& ya, double rb) {
-            PartTwoState out;
-            rk.do_step(side, ya, ra, out, rb - ra);
-            return out;
-          },
-          [&](double r, const PartTwoState& y) { return first_invariant(y[0], s_.a / r); });
-      track(r, i1);
-    } catch (const IntegrationFailure&) {
-      track(side_max.sampled().r, side_max.sampled().value);
-    }
+    const auto side_peak = refined_maximum(side_max, side, [&](double r, const PartTwoState& y) {
+      return first_invariant(y[0], s_.a / r);
+    });
+    track(side_peak.r, side_peak.value);
     sol.r_corner = r_corner;
     sol.part_three_stretch = s_.a / r_corner;
     sol.part_two_length = corner[1];
@@ -327,16 +318,8 @@ class FlatPunchContact {
     // The indicator rises through zero at the onset force.  Below it, Part I leaving the corner
     // vertically turns back towards the axis (indicator kTurnedBack), so the sign change is found
     // by bracketing, starting from a force far below any onset.
-    auto indicator = [&](double f) { return part_two_indicator(f); };
-    const double f_probe = 1e-4;
-    const auto g0 = indicator(f_probe);
-    if (!g0 || *g0 >= 0.0) return std::nullopt;
-    const auto f_on = shoot_increasing(indicator,
-                                       f_probe,
-                                       *g0,
-                                       std::numeric_limits<double>::infinity(),
-                                       part_one_.settings().max_iterations,
-                                       0.05);
+    const auto f_on = onset_force(
+        [&](double f) { return part_two_indicator(f); }, part_one_.settings().max_iterations, 0.05);
     if (!f_on) return std::nullopt;
     const auto onset = part_two_onset_stretch(*f_on);
     if (!onset) return std::nullopt;

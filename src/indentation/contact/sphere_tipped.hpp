@@ -459,15 +459,7 @@ class SphereTippedContact {
       if (!onset) return std::nullopt;
       return side_indicator(f, *onset);
     };
-    const double f_probe = 1e-4;
-    const auto g0 = indicator(f_probe);
-    if (!g0 || *g0 >= 0.0) return std::nullopt;
-    const auto f_on = shoot_increasing(indicator,
-                                       f_probe,
-                                       *g0,
-                                       std::numeric_limits<double>::infinity(),
-                                       part_one_.settings().max_iterations,
-                                       0.01);
+    const auto f_on = onset_force(indicator, part_one_.settings().max_iterations, 0.01);
     if (!f_on) return std::nullopt;
     const auto onset = equator_onset(*f_on);
     if (!onset) return std::nullopt;
@@ -698,18 +690,7 @@ class SphereTippedContact {
     auto cap_i1 = [&](double r, const SphereCapState& y) {
       return first_invariant(y[1], s_.a * std::sin(y[0]) / r);
     };
-    auto found = i1_max.sampled();
-    try {
-      IntegrationStepper<SphereCapState> rk;
-      found = i1_max.refine(
-          [&](double ra, const SphereCapState& ya, double rb) {
-            SphereCapState out;
-            rk.do_step(cap, ya, ra, out, rb - ra);
-            return out;
-          },
-          cap_i1);
-    } catch (const IntegrationFailure&) {
-    }
+    const auto found = refined_maximum(i1_max, cap, cap_i1);
     if (found.value > sol.max_i1) {
       sol.max_i1 = found.value;
       sol.max_i1_r = found.r;
@@ -762,21 +743,13 @@ class SphereTippedContact {
       sol.message = "the membrane on the probe's side reaches the locking stretch";
       return false;
     }
-    try {
-      IntegrationStepper<PartTwoState> rk;
-      const auto found = side_max.refine(
-          [&](double ra, const PartTwoState& ya, double rb) {
-            PartTwoState out;
-            rk.do_step(side, ya, ra, out, rb - ra);
-            return out;
-          },
-          [&](double r, const PartTwoState& x) { return first_invariant(x[0], s_.a / r); });
-      if (found.value > sol.max_i1) {
-        sol.max_i1 = found.value;
-        sol.max_i1_r = found.r;
-        sol.max_i1_radius = s_.a;
-      }
-    } catch (const IntegrationFailure&) {
+    const auto found = refined_maximum(side_max, side, [&](double r, const PartTwoState& x) {
+      return first_invariant(x[0], s_.a / r);
+    });
+    if (found.value > sol.max_i1) {
+      sol.max_i1 = found.value;
+      sol.max_i1_r = found.r;
+      sol.max_i1_radius = s_.a;
     }
     const double length = y[1];  // current length of the side
     if (record) {
