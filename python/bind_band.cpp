@@ -153,6 +153,7 @@ void bind_band(py::module_& m) {
         });
         if (!band.nominal.ok())
           raise_solver_error(
+              band.nominal.status,
               band.nominal.message,
               "no puncture point at the nominal parameters: " + band.nominal.message);
         return band;

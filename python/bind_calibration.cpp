@@ -25,21 +25,6 @@ namespace puncture::python {
 
 namespace calibration {
 
-namespace {
-
-// puncture.SolverError, registered by bind_solve (called first).
-PyObject* solver_error_type = nullptr;
-
-}  // namespace
-
-[[noreturn]] void raise_solver_error(const std::string& message, const std::string& what) {
-  py::object error = py::handle(solver_error_type)(what);
-  error.attr("status") = Status::NoConvergence;
-  error.attr("message") = message;
-  PyErr_SetObject(solver_error_type, error.ptr());
-  throw py::error_already_set();
-}
-
 // The CLI's require_finite, with the argument's name for the flag.
 void require_finite(double value, const char* name, const char* range, bool ok) {
   if (!std::isfinite(value) || !ok)
@@ -99,7 +84,6 @@ void bind_inversions(py::module_& m) {
 }  // namespace calibration
 
 void bind_calibration(py::module_& m) {
-  calibration::solver_error_type = m.attr("SolverError").ptr();  // the module keeps it alive
   calibration::bind_critical_i1(m);
   calibration::bind_inversions(m);
   calibration::bind_friction(m);

@@ -19,10 +19,6 @@
 
 namespace puncture::python::calibration {
 
-// Raises puncture.SolverError (registered by bind_solve) with the given text, status
-// NoConvergence and .message.
-[[noreturn]] void raise_solver_error(const std::string& message, const std::string& what);
-
 // The CLI's require_finite, with the argument's name for the flag.
 void require_finite(double value, const char* name, const char* range, bool ok);
 

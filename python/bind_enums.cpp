@@ -33,12 +33,25 @@ void bind_enums(py::module_& m) {
       .value("Converged", Status::Converged)
       .value("NoConvergence", Status::NoConvergence)
       .value("BeyondLocking", Status::BeyondLocking)
+      .value("LimitLoad", Status::LimitLoad)
       .value("StickWrapsSide", Status::StickWrapsSide)
       .value("NotReached", Status::NotReached)
       .value("Incomplete", Status::Incomplete)
       .value("ChecksFailed", Status::ChecksFailed)
       .value("OutsideModel", Status::OutsideModel)
-      .def_property_readonly("token", [](Status s) { return to_string(s); });
+      .def_property_readonly("token", [](Status s) { return to_string(s); })
+      .def_property_readonly(
+          "failure_kind", [](Status s) { return failure_kind(s); }, "FailureKind of this status");
+  py::enum_<FailureKind>(m,
+                         "FailureKind",
+                         "Why a result failed: Physical (the membrane has no such state: change "
+                         "the input), Numerical (the solver did not converge: a bug to report), "
+                         "OutsideModel (the model does not cover the state); None when ok")
+      .value("None_", FailureKind::None)
+      .value("Physical", FailureKind::Physical)
+      .value("Numerical", FailureKind::Numerical)
+      .value("OutsideModel", FailureKind::OutsideModel)
+      .def_property_readonly("token", [](FailureKind k) { return to_token(k); });
   py::class_<Outcome>(m,
                       "Outcome",
                       "What every result reports about itself: status, message and ok.  Invalid "
@@ -46,7 +59,10 @@ void bind_enums(py::module_& m) {
       .def_readonly("status", &Outcome::status)
       .def_readonly("message", &Outcome::message, "why, when not ok; a warning (or empty) when ok")
       .def_property_readonly(
-          "ok", &Outcome::ok, "True when the result is usable (status == Status.Converged)");
+          "ok", &Outcome::ok, "True when the result is usable (status == Status.Converged)")
+      .def_property_readonly("failure_kind",
+                             &Outcome::failure_kind,
+                             "FailureKind.Physical, .Numerical or .OutsideModel when not ok");
 
   py::enum_<StickRule>(
       m, "StickRule", "When a membrane held at the indenter's edge starts to slide")

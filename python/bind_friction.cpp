@@ -75,7 +75,8 @@ void bind_friction(py::module_& m) {
           py::gil_scoped_release release;
           e = friction_from_hole(problem, hole, chosen, o);  // ignores its friction
         });
-        if (!e.friction.ok()) raise_solver_error(e.friction.message, e.friction.message);
+        if (!e.friction.ok())
+          raise_solver_error(e.friction.status, e.friction.message, e.friction.message);
         return e;
       },
       py::arg("problem"),

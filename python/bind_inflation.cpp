@@ -50,17 +50,6 @@ auto released(F&& f) {
   });
 }
 
-// puncture.SolverError (registered by bind_solve) with .status and .message.
-[[noreturn]] void raise_solver_error(Status status, const std::string& message,
-                                     const std::string& what) {
-  const py::object cls = py::module_::import("puncture._puncture").attr("SolverError");
-  py::object error = cls(what);
-  error.attr("status") = status;
-  error.attr("message") = message;
-  PyErr_SetObject(cls.ptr(), error.ptr());
-  throw py::error_already_set();
-}
-
 template <class Result>
 py::object with_problem(Result&& result, const InflationProblem& problem) {
   py::object out = py::cast(std::forward<Result>(result));
@@ -369,7 +358,7 @@ void bind_inflation(py::module_& m) {
       py::arg("scan_points") = 60,
       py::arg("options") = py::none(),
       "Every state at pressure pressure_mpa [MPa] up to the burst (or max_pole_stretch), in\n"
-      "increasing pole stretch; .states is empty (with a .message) when none carries it.");
+      "increasing pole stretch.  Raises SolverError (status NotReached) when none carries it.");
 
   m.def(
       "inflation_burst",

@@ -44,7 +44,7 @@ void bind_j_lim(py::module_& m) {
           py::gil_scoped_release release;
           e = j_lim_from_puncture_force(problem, puncture_force_n, o);  // ignores its J_lim
         });
-        if (!e.j_lim.ok()) raise_solver_error(e.j_lim.message, e.j_lim.message);
+        if (!e.j_lim.ok()) raise_solver_error(e.j_lim.status, e.j_lim.message, e.j_lim.message);
         return e;
       },
       py::arg("problem"),

@@ -163,6 +163,10 @@ void bind_results(py::module_& m) {
       .def_readonly("max_first_invariant_radius_mm",
                     &Equilibrium::max_first_invariant_radius_mm,
                     "current radius r of the largest I1 [mm]")
+      .def_readonly("beyond_puncture",
+                    &Equilibrium::beyond_puncture,
+                    "True when the failure criterion is exceeded: loaded to this state the "
+                    "membrane would already have punctured")
       .def_readonly("clamp_residual", &Equilibrium::clamp_residual)
       .def_readonly("shooting_evaluations", &Equilibrium::shooting_evaluations)
       .def_readonly("fields", &Equilibrium::fields)
@@ -178,6 +182,9 @@ void bind_results(py::module_& m) {
       .def_readonly("part_two_length_mm", &CurvePoint::part_two_length_mm)
       .def_readonly("corner_slope_rad", &CurvePoint::corner_slope_rad)
       .def_readonly("max_first_invariant", &CurvePoint::max_first_invariant)
+      .def_readonly("beyond_puncture",
+                    &CurvePoint::beyond_puncture,
+                    "True past the puncture point (the model's continuation)")
       .def("__repr__", [](const CurvePoint& p) {
         return fmt::format("<CurvePoint depth_mm={:.6g}, force_n={:.6g}, {}>",
                            p.depth_mm,
@@ -273,6 +280,7 @@ void bind_results(py::module_& m) {
                  {"part_three_stretch", "part_two_length_mm", "corner_slope_rad"})
               d[name] = self.attr(name);
             d["max_i1"] = self.attr("max_first_invariant");
+            d["beyond_puncture"] = self.attr("beyond_puncture");
             return d;
           },
           "The curve as a dict named like the CLI's CSV columns (stage and configuration as "
@@ -293,6 +301,12 @@ void bind_results(py::module_& m) {
                &CurvePoint::corner_slope_rad,
                "slope of Part I at the indenter [rad]");
   curve_column(curve, "max_first_invariant", &CurvePoint::max_first_invariant, "largest I1");
+  curve.def_property_readonly(
+      "beyond_puncture",
+      [](const LoadingCurve& c) {
+        return column<bool>(c.points, [](const CurvePoint& p) { return p.beyond_puncture; });
+      },
+      "bool per point: True past the puncture point (curves with max_depth_mm beyond it)");
 
   py::class_<StageBoundary, Outcome>(
       m, "StageBoundary", "Where the stick criterion switches the stage", py::dynamic_attr())

@@ -100,23 +100,37 @@ py::object solve_state(const Problem& problem, double load, bool by_force, const
   return with_problem(std::move(e), problem);
 }
 
+// Never destroyed: it must outlive the interpreter's own references.
+py::exception<SolverFailure>* solver_error = nullptr;
+
+// Sets the Python error indicator to a SolverError (what an exception translator must do).
+void set_solver_error(Status status, const std::string& message, const std::string& what) {
+  py::object error = py::handle(solver_error->ptr())(what);
+  error.attr("status") = status;
+  error.attr("failure_kind") = failure_kind(status);
+  error.attr("message") = message;
+  PyErr_SetObject(solver_error->ptr(), error.ptr());
+}
+
 }  // namespace
 
+[[noreturn]] void raise_solver_error(Status status, const std::string& message,
+                                     const std::string& what) {
+  set_solver_error(status, message, what);
+  throw py::error_already_set();
+}
+
 void bind_solve(py::module_& m) {
-  // Never destroyed: it must outlive the interpreter's own references.
-  static auto* solver_error =
-      new py::exception<SolverFailure>(m, "SolverError", PyExc_RuntimeError);
+  solver_error = new py::exception<SolverFailure>(m, "SolverError", PyExc_RuntimeError);
   solver_error->doc() =
-      "The solver gave no usable result (the CLI's exit code 2).  Attributes: status (Status)\n"
-      "and message (the solver's reason); str() has both.";
+      "The solver gave no usable result (the CLI's exit code 2).  Attributes: status (Status),\n"
+      "failure_kind (FailureKind: Physical, Numerical or OutsideModel) and message (the\n"
+      "solver's reason); str() has both.";
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const SolverFailure& e) {
-      py::object error = py::handle(solver_error->ptr())(e.what());
-      error.attr("status") = e.status;
-      error.attr("message") = e.message;
-      PyErr_SetObject(solver_error->ptr(), error.ptr());
+      set_solver_error(e.status, e.message, e.what());
     }
   });
 

@@ -142,7 +142,8 @@ void bind_uniaxial(py::module_& m) {
           py::gil_scoped_release release;
           fit = fit_uniaxial(data, chosen);
         });
-        if (!fit.ok()) raise_solver_error(fit.message, "the fit did not converge: " + fit.message);
+        if (!fit.ok())
+          raise_solver_error(fit.status, fit.message, "the fit did not converge: " + fit.message);
         return fit;
       },
       py::arg("stretch"),

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture::python {
@@ -38,6 +39,11 @@ py::array_t<T> column(const Items& items, Get get) {
   for (const auto& item : items) out(i++) = get(item);
   return a;
 }
+
+// Raises puncture.SolverError (registered by bind_solve) with .status, .failure_kind and
+// .message (the library's reason); str() is `what`.  Needs the GIL.
+[[noreturn]] void raise_solver_error(Status status, const std::string& message,
+                                     const std::string& what);
 
 // The library's validation errors, each message prefixed with the attribute it is about (as the
 // CLI prefixes them with the flag), under "invalid input:"; empty when there is none.

@@ -12,6 +12,8 @@ std::string to_string(Status s) {
       return "no convergence";
     case Status::BeyondLocking:
       return "beyond locking";
+    case Status::LimitLoad:
+      return "limit load";
     case Status::StickWrapsSide:
       return "stick wraps side";
     case Status::NotReached:
@@ -22,6 +24,40 @@ std::string to_string(Status s) {
       return "checks failed";
     case Status::OutsideModel:
       return "outside the model";
+  }
+  return "?";
+}
+
+FailureKind failure_kind(Status s) {
+  switch (s) {
+    case Status::Converged:
+      return FailureKind::None;
+    case Status::BeyondLocking:
+    case Status::LimitLoad:
+    case Status::StickWrapsSide:
+    case Status::NotReached:
+      return FailureKind::Physical;
+    case Status::OutsideModel:
+      return FailureKind::OutsideModel;
+    // Evaluations that failed, or two methods that disagree: the solver's trouble.
+    case Status::NoConvergence:
+    case Status::Incomplete:
+    case Status::ChecksFailed:
+      return FailureKind::Numerical;
+  }
+  return FailureKind::Numerical;
+}
+
+std::string to_token(FailureKind k) {
+  switch (k) {
+    case FailureKind::None:
+      return "none";
+    case FailureKind::Physical:
+      return "physical";
+    case FailureKind::Numerical:
+      return "numerical";
+    case FailureKind::OutsideModel:
+      return "outside_model";
   }
   return "?";
 }

@@ -125,7 +125,7 @@ std::string run_friction(const CLI::App& app, const ProblemFlags& pf, const Cali
   }
   const auto& primary =
       report.at_measured_force ? *report.at_measured_force : report.at_predicted_puncture;
-  if (!primary.friction.ok()) throw SolveError(primary.friction.message);
+  if (!primary.friction.ok()) throw SolveError(primary.friction.message, primary.friction.status);
   return calibration_text(report, format);
 }
 
@@ -177,7 +177,8 @@ std::string run_jlim(const CLI::App& app, const ProblemFlags& pf, const Calibrat
   } catch (const std::invalid_argument& e) {
     rethrow_as_input(e);
   }
-  if (!report.estimate.j_lim.ok()) throw SolveError(report.estimate.j_lim.message);
+  if (!report.estimate.j_lim.ok())
+    throw SolveError(report.estimate.j_lim.message, report.estimate.j_lim.status);
   return calibration_text(report, format);
 }
 
@@ -258,7 +259,8 @@ std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format f
     rethrow_as_input(e);
   }
   if (!report.band.nominal.ok())
-    throw SolveError("no puncture point at the nominal parameters: " + report.band.nominal.message);
+    throw SolveError("no puncture point at the nominal parameters: " + report.band.nominal.message,
+                     report.band.nominal.status);
   return calibration_text(report, format);
 }
 
@@ -303,7 +305,8 @@ std::string run_fit_uniaxial(const CLI::App& app, const ProblemFlags& pf, const 
   } catch (const std::invalid_argument& e) {
     rethrow_as_input(e, f.uniaxial_data.c_str());
   }
-  if (!report.fit.ok()) throw SolveError("the fit did not converge: " + report.fit.message);
+  if (!report.fit.ok())
+    throw SolveError("the fit did not converge: " + report.fit.message, report.fit.status);
   return calibration_text(report, format);
 }
 

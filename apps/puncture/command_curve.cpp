@@ -45,8 +45,10 @@ std::string run_curve(const Problem& problem, const CurveFlags& f, Format format
     report.curve = loading_curve(problem, options);
   }
   if (!report.curve.ok())
-    throw SolveError(fmt::format(
-        "the loading curve failed ({}): {}", to_string(report.curve.status), report.curve.message));
+    throw SolveError(fmt::format("the loading curve failed ({}): {}",
+                                 to_string(report.curve.status),
+                                 report.curve.message),
+                     report.curve.status);
   return render(report, format);
 }
 

@@ -104,7 +104,9 @@ json fig11(const Problem& base) {
 }
 
 json failure(Status status, const std::string& message) {
-  return {{"status", to_string(status)}, {"message", message}};
+  return {{"status", to_string(status)},
+          {"failure_kind", to_token(failure_kind(status))},
+          {"message", message}};
 }
 
 json fig12a(const Problem& base) {

@@ -103,7 +103,8 @@ std::string run_inflate(const CLI::App& app, const ProblemFlags& pf, const Curve
         throw SolveError(fmt::format("no inflated state at pole stretch {} ({}): {}",
                                      f.pole_stretch,
                                      to_string(report.state.status),
-                                     report.state.message));
+                                     report.state.message),
+                         report.state.status);
       return inflation_text(report, format);
     }
     Progress progress("inflate");
@@ -115,7 +116,8 @@ std::string run_inflate(const CLI::App& app, const ProblemFlags& pf, const Curve
         throw SolveError(fmt::format("the states at pressure {} MPa could not be found ({}): {}",
                                      f.pressure_mpa,
                                      to_string(report.result.status),
-                                     report.result.message));
+                                     report.result.message),
+                         report.result.status);
       return inflation_text(report, format);
     }
     progress.note("locating the burst");
@@ -126,7 +128,8 @@ std::string run_inflate(const CLI::App& app, const ProblemFlags& pf, const Curve
     if (!report.curve.ok())
       throw SolveError(fmt::format("the inflation curve failed ({}): {}",
                                    to_string(report.curve.status),
-                                   report.curve.message));
+                                   report.curve.message),
+                       report.curve.status);
     return inflation_text(report, format);
   } catch (const InvalidInput& e) {
     rethrow_with_flags(e);

@@ -17,7 +17,7 @@ std::string run_puncture(const Problem& problem, Format format) {
     report.puncture = predict_puncture(problem);
   }
   if (!report.puncture.ok())
-    throw SolveError("no puncture point found: " + report.puncture.message);
+    throw SolveError("no puncture point found: " + report.puncture.message, report.puncture.status);
   return render(report, format);
 }
 

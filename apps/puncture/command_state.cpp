@@ -22,8 +22,10 @@ struct StageChoice {
 StageChoice automatic_stage(const Problem& problem, const StateFlags& f, bool by_force) {
   const auto b = stick_slip_boundary(problem);
   if (b.status != Status::Converged)
-    throw SolveError(fmt::format(
-        "cannot locate the stick -> slip switch ({}): {}", to_string(b.status), b.message));
+    throw SolveError(
+        fmt::format(
+            "cannot locate the stick -> slip switch ({}): {}", to_string(b.status), b.message),
+        b.status);
   if (b.first_stage == Stage::Slip)
     return {Stage::Slip, "auto: with --stick none the membrane slides from the first touch"};
   if (!b.switches) return {Stage::Stick, "auto: with --stick always the membrane is held"};
@@ -92,7 +94,8 @@ std::string run_state(const Problem& problem, const StateFlags& f, Format format
     throw SolveError(fmt::format("no equilibrium in the {} stage ({}): {}",
                                  to_string(choice.stage),
                                  to_string(report.state.status),
-                                 report.state.message));
+                                 report.state.message),
+                     report.state.status);
   return render(report, format);
 }
 

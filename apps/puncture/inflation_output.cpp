@@ -319,22 +319,15 @@ std::string summary(const InflationPressureReport& r) {
                      num(a.pressure_mpa, "pressure"),
                      num(a.max_pole_stretch, "search end"),
                      r.to_burst ? "the burst" : "set by --max-pole-stretch");
-  if (a.states.empty()) {
-    line(out, "states", "none: " + a.message);
-  } else {
-    line(out,
-         "states",
-         a.states.size() == 1
-             ? std::string("1")
-             : fmt::format("{}; the first is reached by inflating slowly from flat",
-                           a.states.size()));
-  }
+  line(out,
+       "states",
+       a.states.size() == 1 ? std::string("1")
+                            : fmt::format("{}; the first is reached by inflating slowly from flat",
+                                          a.states.size()));
   extrema_lines(out, a.extrema);
-  if (!a.states.empty()) {
-    out += "States (--format json for their fields)\n";
-    const auto rows = only(pressure_rows(a), kSummaryColumns);
-    text_table(out, rows, spread_rows(rows.rows.size()));
-  }
+  out += "States (--format json for their fields)\n";
+  const auto rows = only(pressure_rows(a), kSummaryColumns);
+  text_table(out, rows, spread_rows(rows.rows.size()));
   return out;
 }
 
@@ -382,7 +375,6 @@ std::string inflation_text(const InflationStateReport& r, Format format) {
 std::string inflation_text(const InflationPressureReport& r, Format format) {
   switch (format) {
     case Format::Csv:
-      if (r.result.states.empty()) fmt::print(stderr, "puncture: note: {}\n", r.result.message);
       return csv(pressure_rows(r.result));
     case Format::Json:
       return dump(pressure_json(r));

@@ -13,6 +13,7 @@
 #include "output_options.hpp"
 #include "plot.hpp"
 #include "problem_options.hpp"
+#include "solve_failure.hpp"
 
 namespace {
 
@@ -62,6 +63,7 @@ constexpr const char* kSubcommandFooter =
 
 int main(int argc, char** argv) {
   using namespace puncture::cli;
+  OutputFlags output_flags;  // outside the try: a solve failure is written in the format asked
   try {
     CLI::App app{kDescription, "puncture"};
     app.fallthrough();  // parent flags are accepted after the subcommand too
@@ -76,7 +78,6 @@ int main(int argc, char** argv) {
     app.allow_config_extras(CLI::config_extras_mode::error);
 
     ProblemFlags problem_flags;
-    OutputFlags output_flags;
     CurveFlags curve_flags;
     StateFlags state_flags;
     add_problem_options(app, problem_flags);
@@ -197,7 +198,7 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "puncture: error: {}\n", e.what());
     return kExitBadInput;
   } catch (const SolveError& e) {
-    fmt::print(stderr, "puncture: solver failure: {}\n", e.what());
+    report_solve_failure(e, output_flags);
     return kExitSolverFailure;
   } catch (const PlotError& e) {
     fmt::print(stderr, "puncture: plot failed: {}\n", e.what());

@@ -45,6 +45,7 @@ json state_json(const Equilibrium& e) {
        finite(e.max_first_invariant_reference_radius_mm, "reference radius of the largest I1")},
       {"clamp_residual", finite(e.clamp_residual, "clamp residual")},
       {"shooting_evaluations", e.shooting_evaluations},
+      {"beyond_puncture", e.beyond_puncture},
   };
   if (const auto ratio = finite_or_unbounded(e.corner_tension_ratio, "corner tension ratio"))
     out["corner_tension_ratio"] = *ratio;

@@ -21,7 +21,8 @@ Table curve_table(const std::vector<CurvePoint>& points) {
                "part_three_stretch",
                "part_two_length_mm",
                "corner_slope_rad",
-               "max_i1"};
+               "max_i1",
+               "beyond_puncture"};
   for (const auto& p : points)
     t.rows.push_back({p.depth_mm,
                       p.force_n,
@@ -31,7 +32,8 @@ Table curve_table(const std::vector<CurvePoint>& points) {
                       p.part_three_stretch,
                       p.part_two_length_mm,
                       p.corner_slope_rad,
-                      p.max_first_invariant});
+                      p.max_first_invariant,
+                      p.beyond_puncture ? 1 : 0});
   return t;
 }
 

@@ -41,6 +41,9 @@ struct Equilibrium : Outcome {
   double max_first_invariant_reference_radius_mm = 0.0;        // where it is: reference radius R
   double max_first_invariant_radius_mm = 0.0;                  // ... and current radius r
   MembranePart max_first_invariant_part = MembranePart::Free;  // ... in this part
+  // The failure criterion is exceeded in this state: loaded to it, the membrane would already
+  // have punctured (a state of the model, not of the real membrane).
+  bool beyond_puncture = false;
   double clamp_residual = 0.0;   // |lambda2(A) - 1| reached by the shooting
   int shooting_evaluations = 0;  // integrations of Part I used
   MembraneFields fields;

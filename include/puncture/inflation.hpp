@@ -129,9 +129,10 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
 
 // Every state at pressure p [MPa] with a pole stretch up to the burst (or the range's
 // max_pole_stretch), in increasing pole stretch: states[0] is the one reached by slowly
-// inflating from flat; more than one exist where the pressure curve turns back.  Empty, with
-// a message, when no state in the range carries that pressure (e.g. above a limit point).
-struct InflationAtPressure : Outcome {  // Converged also when no state carries the pressure
+// inflating from flat; more than one exist where the pressure curve turns back.  NotReached, with
+// no states and a message giving the highest pressure of the range, when no state in the range
+// carries that pressure (e.g. above a limit point).
+struct InflationAtPressure : Outcome {
   double pressure_mpa = 0.0;
   double max_pole_stretch = 1.0;  // the range searched
   std::vector<InflationState> states;

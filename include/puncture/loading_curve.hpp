@@ -20,6 +20,9 @@ struct CurvePoint {
   double part_two_length_mm = 0.0;
   double corner_slope_rad = 0.0;
   double max_first_invariant = 3.0;
+  // Deeper than the puncture point (or past the failure criterion): the real membrane has
+  // punctured; the point is the model's continuation (curves with max_depth_mm).
+  bool beyond_puncture = false;
 };
 
 // The stick -> slip switch under displacement control: at the switch depth the held state and

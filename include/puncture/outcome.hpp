@@ -19,6 +19,7 @@ enum class Status {
   Converged,
   NoConvergence,   // the shooting did not reach the clamp condition; message says where
   BeyondLocking,   // the load needs stretches beyond the material's locking limit
+  LimitLoad,       // the load is beyond the largest the membrane carries (a law without locking)
   StickWrapsSide,  // a held membrane would wrap the indenter's side: outside the stick model
   NotReached,      // the criterion or the target is not reached in the range the model covers
   Incomplete,      // some of the evaluations behind the result failed; the message lists them
@@ -27,6 +28,17 @@ enum class Status {
 };
 
 std::string to_string(Status status);
+
+// Why a result failed, in two kinds that call for different actions:
+//  - Physical: the model's answer is that there is no such state (locking, a limit load, the
+//    end of a branch, a target beyond reach, a criterion never met).  Change the input.
+//  - Numerical: the solver did not converge although a state may exist.  A bug to report.
+//  - OutsideModel: the state needs what the chosen model does not cover (e.g. friction on a
+//    curved side); neither the membrane's answer nor a solver failure.
+enum class FailureKind { None, Physical, Numerical, OutsideModel };
+FailureKind failure_kind(Status status);
+// "none", "physical", "numerical", "outside_model": as written in JSON.
+std::string to_token(FailureKind kind);
 
 struct ValidationError {
   std::string parameter;  // attribute path or argument name, e.g. "geometry.clamp_radius_mm"
@@ -40,6 +52,7 @@ struct Outcome {
   Status status = Status::NoConvergence;
   std::string message;  // why, when not ok(); a warning (or empty) when ok()
   bool ok() const { return status == Status::Converged; }
+  FailureKind failure_kind() const { return puncture::failure_kind(status); }
 };
 
 class InvalidInput : public std::invalid_argument {

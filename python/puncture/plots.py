@@ -152,6 +152,7 @@ class _Curve:
             self.depth = np.array([p["depth_mm"] for p in points], dtype=float)
             self.force = np.array([p["force_n"] for p in points], dtype=float)
             self.configuration = [p["configuration"] for p in points]
+            self.beyond = np.array([bool(p.get("beyond_puncture", 0)) for p in points], dtype=bool)
             switch = curve.get("stick_slip") or {}
             self.switch = (
                 (switch["depth_mm"], switch["force_stuck_n"], switch["force_sliding_n"])
@@ -170,6 +171,7 @@ class _Curve:
             self.depth = np.asarray(obj.depth_mm, dtype=float)
             self.force = np.asarray(obj.force_n, dtype=float)
             self.configuration = [_token(c) for c in obj.configuration]
+            self.beyond = np.asarray(obj.beyond_puncture, dtype=bool)
             s = obj.stick_slip
             self.switch = (s.depth_mm, s.force_stuck_n, s.force_sliding_n) if s.occurs else None
             self.onset_depth = obj.part_two_onset_depth_mm
@@ -198,6 +200,7 @@ class _State:
             self.configuration = state["configuration"]
             self.max_i1 = state["max_i1"]
             self.max_i1_R = state["max_i1_reference_radius_mm"]
+            self.beyond = bool(state.get("beyond_puncture", False))
         else:
             if not hasattr(obj, "fields") and hasattr(obj, "state"):  # a PuncturePrediction
                 obj = obj.state
@@ -215,6 +218,7 @@ class _State:
             self.configuration = _token(obj.configuration)
             self.max_i1 = obj.max_first_invariant
             self.max_i1_R = obj.max_first_invariant_reference_radius_mm
+            self.beyond = bool(obj.beyond_puncture)
         if not self.R.size:
             raise ValueError("the state has no fields (solved with record_fields off?)")
         # What the plots need of the problem, from the fields when the result does not carry it.
@@ -226,7 +230,8 @@ class _State:
         self.info = info
 
     def label(self):
-        return f"F = {self.force_n:.3g} N, δ = {self.depth_mm:.3g} mm"
+        text = f"F = {self.force_n:.3g} N, δ = {self.depth_mm:.3g} mm"
+        return text + " (BEYOND PUNCTURE)" if self.beyond else text
 
     def segments(self):
         """(part, slice) runs of consecutive samples in the same part, each sharing its end
@@ -284,9 +289,16 @@ def draw_loading_curve(ax, curve, *, label=None, colour="black", shade=True, ann
                 seen.add(token)
                 handles.append(Patch(color=STAGE_COLOURS.get(token, "white"),
                                      label=STAGE_NAMES.get(token, token)))
-    (line,) = ax.plot(c.depth, c.force, color=colour, lw=1.8, zorder=3,
+    # Past the puncture point the curve is the model's continuation: drawn dashed and grey.
+    intact = np.flatnonzero(~c.beyond)
+    end = int(intact[-1]) + 1 if intact.size else 0
+    (line,) = ax.plot(c.depth[:end], c.force[:end], color=colour, lw=1.8, zorder=3,
                       label=label or "model: force F")
     handles.insert(0, line)
+    if end < c.depth.size:
+        (past,) = ax.plot(c.depth[max(end - 1, 0):], c.force[max(end - 1, 0):], color="grey",
+                          lw=1.4, ls="--", zorder=3, label="beyond puncture (already punctured)")
+        handles.insert(1, past)
     if c.puncture is not None:
         d, f, where = c.puncture
         (mark,) = ax.plot([d], [f], "X", color=CRITICAL_COLOUR, ms=10, mec="white", mew=0.8,

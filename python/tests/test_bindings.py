@@ -10,7 +10,8 @@ import pytest
 import puncture as pu
 
 CURVE_COLUMNS = ["depth_mm", "force_n", "normalized_force", "stage", "configuration",
-                 "part_three_stretch", "part_two_length_mm", "corner_slope_rad", "max_i1"]
+                 "part_three_stretch", "part_two_length_mm", "corner_slope_rad", "max_i1",
+                 "beyond_puncture"]
 FIELD_COLUMNS = ["part", "R_mm", "r_mm", "z_mm", "slope_rad", "lambda1", "lambda2", "lambda3",
                  "s1_mpa", "s2_mpa", "I1", "contact_pressure_mpa", "friction_traction_mpa"]
 

@@ -28,7 +28,11 @@ def cli_error(cli, *args):
     assert rc in (1, 2) and out == "", err
     prefix = "puncture: error: " if rc == 1 else "puncture: solver failure: "
     assert err.startswith(prefix), err
-    return rc, err[len(prefix):].strip()
+    message = err[len(prefix):]
+    if rc == 2:  # the failure kind follows on its own line
+        message, kind = message.split("\n  failure kind: ")
+        assert kind.split(":")[0] in ("physical", "numerical", "outside the model"), kind
+    return rc, message.strip()
 
 
 def without_flag(message):

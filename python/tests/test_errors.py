@@ -88,10 +88,13 @@ def test_beyond_locking_raises_solver_error_like_the_cli(cli):
     e = info.value
     assert isinstance(e, RuntimeError)
     assert e.status == pu.Status.BeyondLocking and e.status.token == "beyond locking"
+    assert e.failure_kind == pu.FailureKind.Physical and e.failure_kind.token == "physical"
     assert e.message and e.message in str(e)
     rc, out, err = cli.run("state", "--force", "1e8")
     assert rc == 2 and out == ""
-    assert err.strip() == f"puncture: solver failure: {e}"
+    first, kind = err.strip().split("\n")
+    assert first == f"puncture: solver failure: {e}"
+    assert kind.strip().startswith("failure kind: physical:")
 
 
 def test_held_membrane_wrapping_the_side_raises_solver_error(cli):
@@ -99,7 +102,8 @@ def test_held_membrane_wrapping_the_side_raises_solver_error(cli):
         pu.solve_at_force(pu.Problem(), 100, stage=pu.Stage.Stick)
     assert info.value.status == pu.Status.StickWrapsSide
     rc, _, err = cli.run("state", "--force", "100", "--stage", "stick")
-    assert rc == 2 and err.strip() == f"puncture: solver failure: {info.value}"
+    assert rc == 2 and err.splitlines()[0] == f"puncture: solver failure: {info.value}"
+    assert info.value.failure_kind == pu.FailureKind.Physical
 
 
 def test_solver_error_is_catchable_as_runtime_error():

@@ -67,8 +67,10 @@ def test_every_state_at_a_pressure():
     two = pu.inflate_at_pressure(nh, 0.95 * limit.state.pressure_mpa)
     assert len(two.states) == 2
     assert two.states[0].pole_stretch < limit.state.pole_stretch < two.states[1].pole_stretch
-    none = pu.inflate_at_pressure(nh, 1.05 * limit.state.pressure_mpa)
-    assert none.ok and len(none) == 0 and "highest pressure" in none.message
+    with pytest.raises(pu.SolverError, match="highest pressure") as none:
+        pu.inflate_at_pressure(nh, 1.05 * limit.state.pressure_mpa)
+    assert none.value.status == pu.Status.NotReached
+    assert none.value.failure_kind == pu.FailureKind.Physical
 
 
 @pytest.mark.parametrize("call,match", [

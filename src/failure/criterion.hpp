@@ -32,6 +32,12 @@ inline double critical_value(const FailureCriterion& criterion) {
   return std::visit([](const CriticalFirstInvariant& c) { return c.critical_i1; }, criterion);
 }
 
+// The criterion is exceeded: loaded to this state the membrane would have punctured.  The margin
+// (1e-8 of the critical value) keeps the puncture state itself, located to ~1e-10, intact.
+inline bool exceeded(const FailureCriterion& criterion, const ScaledSolution& sol) {
+  return sol.ok() && excess(criterion, sol) > 1e-8 * critical_value(criterion);
+}
+
 // What the measure is, in words ("I1").
 inline std::string measure_name(const FailureCriterion& criterion) {
   return std::visit([](const CriticalFirstInvariant&) { return std::string("I1"); }, criterion);

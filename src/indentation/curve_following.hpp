@@ -52,6 +52,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
   const double scale = force_scale_n(p);
   const double big_a = p.geometry.clamp_radius_mm;
   const auto& contact = shooting.contact();
+  const FailureCriterion criterion = failure_criterion(p);
   DepthNewton<Shooting> newton(shooting, curve_tol);
   Predictor predictor;
   Stage segment_stage = boundary.first_stage;
@@ -123,6 +124,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     pt.part_two_length_mm = sol->part_two_length * big_a;
     pt.corner_slope_rad = sol->corner_slope;
     pt.max_first_invariant = max_first_invariant_of(*sol);
+    pt.beyond_puncture = exceeded(criterion, *sol);
     out.points.push_back(pt);
     return true;
   };
@@ -199,6 +201,10 @@ LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
   if (!follow_curve(
           p, shooting, options.curve_tol, boundary, end_depth, has_switch, onset, curve, out))
     return out;
+  // Past the puncture depth the membrane has punctured, whatever its I1 does after a switch.
+  if (out.puncture.ok())
+    for (auto& pt : out.points)
+      if (pt.depth_mm > out.puncture.depth_mm * (1.0 + 1e-9)) pt.beyond_puncture = true;
   if (out.part_two_onset_at_switch) {
     if (out.stick_slip.occurs)
       out.part_two_onset_force_n = out.stick_slip.force_sliding_n;

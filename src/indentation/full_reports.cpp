@@ -1,10 +1,12 @@
 // The full reports of the indentation results (puncture/reports.hpp).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string_view>
 
+#include "puncture/failure.hpp"
 #include "puncture/reports.hpp"
 
 namespace puncture {
@@ -65,6 +67,12 @@ std::string full_report(const Problem& p) {
 std::string full_report(const Equilibrium& e, const Problem& p) {
   if (!e.ok()) return failure(e);
   std::string out;
+  if (e.beyond_puncture)
+    line(out,
+         "BEYOND PUNCTURE",
+         fmt::format("the criterion ({}) is exceeded: loaded to this state the membrane would "
+                     "already have punctured",
+                     describe(failure_criterion(p))));
   line(out, "configuration", to_string(e.configuration));
   line(out,
        "force",
@@ -126,6 +134,15 @@ std::string full_report(const PuncturePrediction& p) {
 std::string full_report(const LoadingCurve& c, const Problem& p) {
   if (!c.ok()) return failure(c);
   std::string out;
+  const auto beyond = std::count_if(
+      c.points.begin(), c.points.end(), [](const CurvePoint& q) { return q.beyond_puncture; });
+  if (beyond > 0)
+    line(out,
+         "BEYOND PUNCTURE",
+         fmt::format("{} of the {} points lie past the puncture point: the membrane would "
+                     "already have punctured (beyond_puncture = 1 in the table)",
+                     beyond,
+                     c.points.size()));
   line(out, "stick -> slip switch", switch_text(c, p));
   line(out, "Part II appears", part_two_text(c, p));
   out += full_report(c.puncture);

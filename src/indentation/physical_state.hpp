@@ -1,8 +1,11 @@
 #pragma once
 // A normalised solution as the user's Equilibrium (mm, N, MPa), with the fields when asked: the
 // contact model places the largest I1 and gives the fields of the parts in contact.
+#include <fmt/format.h>
+
 #include <cmath>
 
+#include "failure/criterion.hpp"
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/membrane_fields.hpp"
 #include "indentation/scaled_solution.hpp"
@@ -36,6 +39,16 @@ Equilibrium to_physical(const Problem& p, const Contact& contact, const ScaledSo
   e.max_first_invariant_part = largest.part;
   e.clamp_residual = std::abs(sol.residual);
   e.shooting_evaluations = sol.evaluations;
+  e.beyond_puncture = exceeded(failure_criterion(p), sol);
+  if (sol.deepest_state)
+    e.message = fmt::format(
+        "this depth cannot be reached: the deepest equilibrium of the {} stage is at depth "
+        "{:.6g} mm and force {:.6g} N (largest I1 {:.6g}); beyond it {}",
+        to_string(stage),
+        e.depth_mm,
+        e.force_n,
+        e.max_first_invariant,
+        sol.message);
   if (options.record_fields && sol.ok()) {
     const FieldScales scales{big_a, p.material.shear_modulus_mpa, p.geometry.thickness_mm};
     contact.append_contact_fields(sol, scales, e.fields);

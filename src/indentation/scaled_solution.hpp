@@ -46,6 +46,9 @@ struct ScaledSolution {
   int evaluations = 0;
   bool integrated = false;    // every part was integrated (residual and depth are defined)
   double shooting_tol = 0.0;  // the clamp tolerance it was judged against
+  // A failure to reach a depth that carries the deepest state the stage reaches (its fields
+  // are that state's; the message says why no deeper state exists).
+  bool deepest_state = false;
   std::vector<PartOneSample> part_one;
   std::vector<PartTwoSample> part_two;
   bool ok() const { return status == Status::Converged; }

@@ -113,6 +113,9 @@ class IndentationShooting {
     return part_one_.residual(f, contact_.free_start(c, f, p));
   }
 
+  // A depth within this relative distance of the requested one is a root of the depth search.
+  static constexpr double kDepthMatch = 1e-5;
+
   // The equilibrium at normalised depth d in `stage`: the force bracketed from zero (a search
   // over solve(); the loading curve uses the faster DepthNewton and falls back on this).
   ScaledSolution solve_at_depth(Stage stage, double d, double f_guess = 0.0) const {
@@ -141,7 +144,23 @@ class IndentationShooting {
         last_failure.message = "the requested depth cannot be reached: " + last_failure.message;
       return last_failure;
     }
-    return solve(stage, *f);
+    ScaledSolution sol = solve(stage, *f);
+    // The bracket closes either on a root or, when the depth lies beyond every equilibrium of
+    // the stage, on the largest force the stage carries (where the residual jumps from the
+    // deepest state's to the failure's stand-in).  At a root the depth matches to the
+    // shooting's noise (up to ~2e-6 relative at micrometre depths, where the depth goes as the
+    // cube root of the force); at the end of the solutions it falls short by the unreachable rest.
+    if (sol.ok() && !(std::abs(sol.depth - d) <= kDepthMatch * d)) {
+      const bool limit = last_failure.status != Status::Converged &&
+                         failure_kind(last_failure.status) == FailureKind::Physical;
+      sol.status = limit ? last_failure.status : Status::NoConvergence;
+      sol.message = limit ? last_failure.message
+                          : "the force bracket closed on the end of the solutions, not on the "
+                            "requested depth: " +
+                                last_failure.message;
+      sol.deepest_state = true;
+    }
+    return sol;
   }
 
  private:

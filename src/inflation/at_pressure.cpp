@@ -110,7 +110,7 @@ InflationAtPressure inflate_at_pressure(const InflationProblem& problem, double 
     out.message = "the solver failed while searching the pressure: " + failure->message;
     return out;
   }
-  out.status = Status::Converged;
+  out.status = out.states.empty() ? Status::NotReached : Status::Converged;
   if (out.states.empty())
     out.message = fmt::format(
         "no state with pole stretch up to {:.6g} carries {:g} MPa: the highest pressure in that "

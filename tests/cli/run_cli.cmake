@@ -4,7 +4,7 @@
 #         [-DJSON_NULL="a.b"] [-DOUTPUT_FILE=<file the CLI writes with -o>]
 #         -P run_cli.cmake -- <arguments of puncture>
 # A successful run must print no NaN or infinity; a failing one must print nothing on stdout
-# and a message on stderr.
+# (with --format json: only {"error": {status, failure_kind, message}}) and a message on stderr.
 cmake_minimum_required(VERSION 3.21)
 
 set(args)
@@ -38,8 +38,9 @@ if(NOT rc STREQUAL "${EXPECT_RC}")
 endif()
 
 if(NOT EXPECT_RC EQUAL 0)
-  if(NOT out STREQUAL "")
-    fail("a failing run must print nothing on stdout")
+  # Nothing on stdout, except the error document that --format json asks for.
+  if(NOT out STREQUAL "" AND NOT out MATCHES "^{\n  \"error\": {")
+    fail("a failing run must print nothing on stdout but a JSON error document")
   endif()
   if(err STREQUAL "")
     fail("a failing run must explain itself on stderr")

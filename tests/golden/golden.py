@@ -4,6 +4,10 @@ code's structure can be shown to change no number.
 
     golden.py check  PUNCTURE_EXE DATA_DIR [CASE ...]   compare (exit 1 on any difference)
     golden.py record PUNCTURE_EXE DATA_DIR [CASE ...]   (re)write the stored outputs
+    golden.py added  PUNCTURE_EXE DATA_DIR [CASE ...]   as check, but keys the stored output
+                                                       lacks are allowed (an output that gained
+                                                       fields keeps every old number: run this
+                                                       before recording it again)
 
 Each case runs the CLI with --format json and stores its output.  `check` compares the parsed
 JSON: the same keys, arrays of the same lengths, the same strings and booleans, integers exactly,
@@ -94,8 +98,9 @@ def run(exe, args):
     return without_checkout(json.loads(proc.stdout))
 
 
-def differences(stored, now, path="$"):
-    """Every place where `now` differs from `stored` beyond the tolerance, as text."""
+def differences(stored, now, path="$", allow_added=False):
+    """Every place where `now` differs from `stored` beyond the tolerance, as text (keys new in
+    `now` are differences unless allow_added)."""
     if isinstance(stored, bool) or isinstance(now, bool) or stored is None or now is None:
         return [] if stored == now else [f"{path}: {stored!r} -> {now!r}"]
     if isinstance(stored, (int, float)) and isinstance(now, (int, float)):
@@ -109,23 +114,24 @@ def differences(stored, now, path="$"):
         return [f"{path}: {type(stored).__name__} -> {type(now).__name__}"]
     if isinstance(stored, dict):
         out = [f"{path}.{k}: missing now" for k in stored if k not in now]
-        out += [f"{path}.{k}: new" for k in now if k not in stored]
+        if not allow_added:
+            out += [f"{path}.{k}: new" for k in now if k not in stored]
         for k in stored:
             if k in now:
-                out += differences(stored[k], now[k], f"{path}.{k}")
+                out += differences(stored[k], now[k], f"{path}.{k}", allow_added)
         return out
     if isinstance(stored, list):
         if len(stored) != len(now):
             return [f"{path}: {len(stored)} items -> {len(now)}"]
         out = []
         for i, (a, b) in enumerate(zip(stored, now)):
-            out += differences(a, b, f"{path}[{i}]")
+            out += differences(a, b, f"{path}[{i}]", allow_added)
         return out
     return [] if stored == now else [f"{path}: {stored!r} -> {now!r}"]
 
 
 def main(argv):
-    if len(argv) < 4 or argv[1] not in ("check", "record"):
+    if len(argv) < 4 or argv[1] not in ("check", "record", "added"):
         print(__doc__, file=sys.stderr)
         return 2
     mode, exe, data = argv[1], argv[2], pathlib.Path(argv[3])
@@ -147,7 +153,7 @@ def main(argv):
             print(f"{name}: no stored output {file} (run golden.py record)")
             failed += 1
             continue
-        diff = differences(json.loads(file.read_text()), now)
+        diff = differences(json.loads(file.read_text()), now, allow_added=mode == "added")
         if diff:
             failed += 1
             print(f"{name}: {len(diff)} difference(s)")
@@ -155,7 +161,7 @@ def main(argv):
                 print(f"  {line}")
         else:
             print(f"{name}: same")
-    if mode == "check":
+    if mode != "record":
         print(f"{len(names) - failed} of {len(names)} cases unchanged")
     return 1 if failed else 0
 

@@ -167,7 +167,7 @@ class FlatPunchContact {
                          return true;
                        });
     if (!ok || r_hit < 0.0) {
-      sol.status = Status::BeyondLocking;
+      sol.status = std::isfinite(locking_i1_) ? Status::BeyondLocking : Status::LimitLoad;
       sol.message = std::isfinite(locking_i1_)
                         ? "Part II reaches the locking stretch before meeting the capstan condition"
                         : "Part II never meets the capstan condition: the force is beyond the "
@@ -579,7 +579,7 @@ class FlatPunchContact {
       const double lowest = parameter_floor(Configuration::SlipWithPartTwo) * (1.0 + 1e-9);
       const double g_low = counted(Configuration::SlipWithPartTwo, lowest).value_or(kBeyondDomain);
       if (g_low >= 0.0) {
-        plan.status = Status::BeyondLocking;
+        plan.status = std::isfinite(locking_i1_) ? Status::BeyondLocking : Status::LimitLoad;
         plan.message = std::isfinite(locking_i1_)
                            ? "the force is beyond what the membrane can carry before the "
                              "material locks"
