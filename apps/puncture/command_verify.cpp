@@ -58,6 +58,7 @@ VerifyOutcome run_verify(const Problem& problem, const VerifyFlags& f, Format fo
   outcome.text = render(report, format);
   outcome.passed = report.verification.ok();
   outcome.failed = report.verification.count(Verdict::Fail);
+  outcome.message = report.verification.message;
   return outcome;
 }
 

@@ -9,7 +9,8 @@
 
 namespace puncture::cli {
 
-// A check outside its tolerance: the output is written, then the program exits with this.
+// A check outside its tolerance, or one that could not be made: the output is written, then the
+// program exits with this.
 inline constexpr int kExitVerificationFailed = 4;
 
 struct VerifyFlags {
@@ -25,6 +26,7 @@ struct VerifyOutcome {
   std::string text;
   bool passed = true;
   int failed = 0;
+  std::string message;  // why not passed
 };
 
 VerifyOutcome run_verify(const Problem& problem, const VerifyFlags& flags, Format format);

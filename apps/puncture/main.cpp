@@ -54,7 +54,8 @@ constexpr const char* kFooter =
     "Plots (--plot, figures) run Python 3 with matplotlib (Debian: python3-matplotlib;\n"
     "another interpreter: PUNCTURE_PYTHON=/path/to/python3).\n"
     "Exit codes: 0 success, 1 invalid input, 2 the solver gave no usable result,\n"
-    "3 the plot could not be drawn (no Python or matplotlib), 4 a `verify` check failed.";
+    "3 the plot could not be drawn (no Python or matplotlib), 4 a `verify` check failed or\n"
+    "could not be made.";
 
 constexpr const char* kSubcommandFooter =
     "The physical, curve and output flags (see puncture --help) may also be given.";
@@ -164,8 +165,9 @@ int main(int argc, char** argv) {
       write_output(output_flags, outcome.text);
       if (outcome.passed) return kExitOk;
       fmt::print(stderr,
-                 "puncture: verification failed: {} check(s) outside their tolerance\n",
-                 outcome.failed);
+                 "puncture: verification {}: {}\n",
+                 outcome.failed > 0 ? "failed" : "incomplete",
+                 outcome.message);
       return kExitVerificationFailed;
     }
     const bool plot = plot_option->count() > 0;

@@ -47,7 +47,8 @@ struct VerifyOptions {
   std::function<void(int, int, std::string_view)> progress;
 };
 
-// ok() when no check failed; else ChecksFailed, the message naming them.
+// ok() when every check passed; ChecksFailed when one failed, else Incomplete when one could not
+// be made (skipped); the message says how many and the first skipped one's reason.
 struct VerificationReport : Outcome {
   std::vector<VerificationCheck> checks;
   int elements = 0;

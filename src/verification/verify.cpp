@@ -3,6 +3,7 @@
 // own error.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <limits>
@@ -289,12 +290,25 @@ VerificationReport verify(const Problem& problem, const VerifyOptions& options) 
   VerificationReport report;
   report.checks = std::move(checks.rows);
   report.elements = options.elements;
-  if (const int failed = report.count(Verdict::Fail); failed == 0) {
-    report.status = Status::Converged;
-  } else {
+  const int failed = report.count(Verdict::Fail), skipped = report.count(Verdict::Skipped);
+  if (failed > 0) {
     report.status = Status::ChecksFailed;
     report.message =
         fmt::format("{} of {} checks outside their tolerance", failed, report.checks.size());
+  } else if (skipped > 0) {
+    // A check that could not be made is not a pass: the membrane is not verified.
+    report.status = Status::Incomplete;
+    const auto first = std::find_if(report.checks.begin(), report.checks.end(), [](const auto& c) {
+      return c.verdict == Verdict::Skipped;
+    });
+    report.message = fmt::format("{} of {} checks skipped (the first: {} {}: {})",
+                                 skipped,
+                                 report.checks.size(),
+                                 first->group,
+                                 first->quantity,
+                                 first->note);
+  } else {
+    report.status = Status::Converged;
   }
   return report;
 }
