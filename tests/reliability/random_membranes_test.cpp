@@ -1,0 +1,86 @@
+// The reliability sweep: seeded random membranes over the documented ranges through the library.
+// Every result is a converged state with finite numbers or a failure with a kind and a reason;
+// the counts by outcome are printed.  PUNCTURE_RELIABILITY_CASES sets the number of membranes.
+#include "random_membranes.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <string>
+
+#include "puncture/loading_curve.hpp"
+
+namespace puncture::test {
+namespace {
+
+int cases_from_environment(int fallback) {
+  const char* text = std::getenv("PUNCTURE_RELIABILITY_CASES");
+  return text ? std::max(1, std::atoi(text)) : fallback;
+}
+
+// The failure's reason without its numbers: "beyond locking: the corner of Part II ..." cut at
+// the first digit, so that counts group by cause.
+std::string reason(const Outcome& o) {
+  std::string text = to_string(o.status) + ": " + o.message;
+  const auto digit = text.find_first_of("0123456789", to_string(o.status).size());
+  if (digit != std::string::npos) text.resize(digit);
+  if (text.size() > 110) text.resize(110);
+  return text;
+}
+
+std::string summary_of(const Problem& p) {
+  return fmt::format(
+      "A = {} mm, a = {} mm, H = {} mm, G = {} MPa, {}, friction {}, critical I1 {}, stick {}, "
+      "{}",
+      p.geometry.clamp_radius_mm,
+      radius_mm(p.indenter),
+      p.geometry.thickness_mm,
+      p.material.shear_modulus_mpa,
+      describe(p.material),
+      p.friction,
+      p.critical_i1,
+      describe(p.stick),
+      to_string(p.part_two_equation));
+}
+
+TEST(Reliability, RandomMembranesGiveAStateOrAPhysicalReason) {
+  const int cases = cases_from_environment(300);
+  constexpr std::uint64_t kSeed = 20261123;
+  std::map<std::string, int> counts;
+  int numerical = 0, converged = 0;
+  for (int k = 0; k < cases; ++k) {
+    const Problem p = random_membrane(kSeed, k);
+    ASSERT_TRUE(validation_errors(p).empty()) << k << ": " << validation_errors(p).front().message;
+    const PuncturePrediction at = predict_puncture(p);
+    if (at.ok()) {
+      ++converged;
+      ASSERT_TRUE(std::isfinite(at.force_n) && at.force_n > 0.0 && std::isfinite(at.depth_mm))
+          << k << ": " << summary_of(p);
+      ++counts["converged"];
+      continue;
+    }
+    EXPECT_FALSE(at.message.empty()) << k;
+    ++counts[to_token(at.failure_kind()) + " | " + reason(at)];
+    if (at.failure_kind() == FailureKind::Numerical) {
+      ++numerical;
+      fmt::print("numerical failure, case {}: {}\n  {}\n", k, summary_of(p), at.message);
+    }
+  }
+  fmt::print("{} membranes (seed {}):\n", cases, kSeed);
+  for (const auto& [what, n] : counts) fmt::print("  {:6d}  {}\n", n, what);
+  RecordProperty("numerical_failures", numerical);
+  RecordProperty("converged", converged);
+  // Every numerical failure is a solver bug; the goal is none.  The bound is the count measured
+  // when the sweep was written (28 of the first 300 membranes: small probes whose Part II search
+  // reports locking far from it, and shootings that stall at a clamp residual ~1e-8), lowered as
+  // their causes are fixed, so that no change adds one.
+  if (cases == 300) EXPECT_LE(numerical, 28);
+  // The sweep must exercise the solver, not only its failure paths.
+  EXPECT_GE(converged, cases / 2);
+}
+
+}  // namespace
+}  // namespace puncture::test
