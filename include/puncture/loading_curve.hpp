@@ -44,7 +44,11 @@ struct PuncturePrediction : Outcome {
   double crack_reference_radius_mm = 0.0;  // where the largest I1 sits (reference radius)
   double crack_radius_mm = 0.0;            // ... and its current distance from the axis
   std::string crack_location;              // in words, e.g. "Part I at the indenter's corner"
-  Equilibrium state;                       // the full state at puncture
+  // The membrane punctures as it starts sliding at the stick -> slip switch: the state is the
+  // sliding one at the switch depth, or (stage Stick) the held one when sliding at that depth
+  // would stretch it without bound past the criterion (beyond a limit load).
+  bool at_switch = false;
+  Equilibrium state;  // the full state at puncture
 };
 
 struct CurveOptions {

@@ -176,7 +176,11 @@ LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
     // to the solver's accuracy): the curve ends with the switch.
     end_depth = puncture_at_switch ? boundary.depth_mm : out.puncture.depth_mm;
   }
-  const bool has_switch = boundary.switches && boundary.depth_mm <= end_depth;
+  // A membrane that punctures as it starts sliding, where no sliding state at the switch depth
+  // is reached (the puncture state lies shallower): the curve ends with the held state.
+  const bool slides_in_curve =
+      !(puncture_at_switch && out.puncture.ok() && out.puncture.stage == Stage::Stick);
+  const bool has_switch = boundary.switches && boundary.depth_mm <= end_depth && slides_in_curve;
   if (has_switch) {
     out.stick_slip.occurs = true;
     out.stick_slip.depth_mm = boundary.depth_mm;

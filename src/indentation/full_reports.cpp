@@ -32,6 +32,12 @@ std::string switch_text(const LoadingCurve& c, const Problem& p) {
                        num(c.stick_slip.force_sliding_n));
   if (p.stick.rule == StickRule::None) return "none: slides from the first touch";
   if (p.stick.rule == StickRule::Always) return "none: held throughout";
+  if (c.puncture.ok() && c.puncture.at_switch && c.puncture.stage == Stage::Stick)
+    return fmt::format(
+        "at depth {} mm, force {} N (held): the membrane punctures as it starts "
+        "sliding",
+        num(c.puncture.depth_mm),
+        num(c.puncture.force_n));
   return "none: still held at the end of the curve";
 }
 

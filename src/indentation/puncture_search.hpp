@@ -107,6 +107,9 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   // The criterion's excess grows along the loading path; its first zero is the puncture.
   auto over_critical = [&](const ScaledSolution& s) { return excess(criterion, s); };
   std::optional<double> f_puncture;
+  // Set when the membrane punctures as it starts sliding although no sliding state at the switch
+  // is reached: the depth at which the sliding membrane reaches the criterion.
+  std::optional<double> sliding_criterion_depth_mm;
   Stage stage = Stage::Slip;
   double slip_from_f = 0.0, slip_from_g = unloaded_excess(criterion);
   if (boundary.first_stage == Stage::Stick) {
@@ -124,14 +127,34 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
     } else {
       const auto s = shooting.solve_at_depth(Stage::Slip, boundary.depth_mm / big_a);
       if (!s.ok()) {
-        out.message = "no sliding state at the stick -> slip switch: " + s.message;
-        return out;
-      }
-      slip_from_f = s.f;
-      slip_from_g = over_critical(s);
-      if (slip_from_g >= 0.0) {  // the jump to sliding already fails the membrane
-        f_puncture = s.f;
-        at_switch = true;
+        // The sliding state at the switch depth may lie beyond what the solver reaches (a limit
+        // load: the depth grows without bound as the force approaches it).  If the sliding
+        // membrane reaches the criterion at a smaller depth, it is past it at the switch (the
+        // criterion grows along the sliding branch): it punctures as it starts sliding, at the
+        // held state's force and depth (the peak a testing machine records).
+        if (const auto f_slip = first_force_where(
+                shooting, Stage::Slip, 0.0, unloaded_excess(criterion), over_critical)) {
+          const auto at = shooting.solve(Stage::Slip, *f_slip);
+          if (at.ok() && at.depth <= boundary.depth_mm / big_a &&
+              excess(criterion, at) >= -1e-6 * critical_value(criterion)) {
+            f_puncture = f_switch;
+            stage = Stage::Stick;
+            at_switch = true;
+            sliding_criterion_depth_mm = at.depth * big_a;
+          }
+        }
+        if (!f_puncture) {
+          out.status = s.status;
+          out.message = "no sliding state at the stick -> slip switch: " + s.message;
+          return out;
+        }
+      } else {
+        slip_from_f = s.f;
+        slip_from_g = over_critical(s);
+        if (slip_from_g >= 0.0) {  // the jump to sliding already fails the membrane
+          f_puncture = s.f;
+          at_switch = true;
+        }
       }
     }
   }
@@ -192,7 +215,16 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   out.part_three_stretch = sol.part_three_stretch;
   out.crack_reference_radius_mm = out.state.max_first_invariant_reference_radius_mm;
   out.crack_location = shooting.contact().crack_location(sol);
-  if (at_switch) out.crack_location += " (at the stick -> slip switch)";
+  out.at_switch = at_switch;
+  if (sliding_criterion_depth_mm)
+    out.crack_location = fmt::format(
+        "as the held membrane starts sliding at the stick -> slip switch (sliding, it reaches "
+        "the critical {} at depth {:.6g} mm, before the switch depth, and stretches without "
+        "bound at this one)",
+        measure_name(criterion),
+        *sliding_criterion_depth_mm);
+  else if (at_switch)
+    out.crack_location += " (at the stick -> slip switch)";
   out.crack_radius_mm = out.state.max_first_invariant_radius_mm;
   return out;
 }

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "indentation/contact/contact_model.hpp"
+#include "indentation/depth_newton.hpp"
 #include "indentation/free_part.hpp"
 #include "numerics/shooting.hpp"
 
@@ -113,6 +114,55 @@ class IndentationShooting {
     return part_one_.residual(f, contact_.free_start(c, f, p));
   }
 
+  // From a state shallower than d (the force bracket's end), the state at depth d followed in
+  // depth control: Newton on (force, shooting parameter) with the clamp and depth residuals
+  // (DepthNewton) at depths stepped towards d, each started from the linear extrapolation of the
+  // last two states; a failed step is halved.  Well posed through a fold of the force, where the
+  // force search is not.  Empty when the states end (or change configuration) before d.
+  // `from` becomes the deepest state reached.
+  std::optional<ScaledSolution> continue_in_depth(ScaledSolution& from, double d) const {
+    DepthNewton<IndentationShooting> newton(*this, settings().shooting_tol);
+    ScaledSolution last = from;
+    std::optional<ScaledSolution> before;
+    // Steps relative to the depth reached (a local continuation), growing while Newton
+    // converges; a step below 1e-4 of the depth that still fails ends the states here.
+    double step = std::min(d - from.depth, kFirstDepthStep * from.depth);
+    int failures = 0;  // failed steps cost the most (integrations beyond the states' end)
+    for (int k = 0; k < kMaxDepthSteps && last.depth < d * (1.0 - kDepthMatch); ++k) {
+      const double target = std::min(d, last.depth + step);
+      double f = last.f, p = last.parameter;
+      if (before && last.depth > before->depth) {
+        const double t = (target - last.depth) / (last.depth - before->depth);
+        const double f_next = last.f + t * (last.f - before->f);
+        const double p_next = last.parameter + t * (last.parameter - before->parameter);
+        if (f_next > 0.0 && p_next > parameter_floor(last.configuration)) {
+          f = f_next;
+          p = p_next;
+        }
+      }
+      auto next = newton.solve(last.configuration, target, f, p);
+      if (!next) {
+        newton.reset();
+        step *= 0.5;
+        if (step < kSmallestDepthStep * last.depth || ++failures > kMaxDepthFailures)
+          return std::nullopt;
+        continue;
+      }
+      before = std::move(last);
+      last = std::move(*next);
+      from = last;
+      step *= 1.5;
+    }
+    if (!(std::abs(last.depth - d) <= kDepthMatch * d)) return std::nullopt;
+    ScaledSolution out = assemble(last.configuration, last.f, last.parameter, true);
+    if (!out.ok()) return std::nullopt;
+    return out;
+  }
+  static constexpr int kMaxDepthSteps = 100;
+  static constexpr int kMaxDepthFailures = 10;
+  static constexpr double kFirstDepthStep = 0.05;
+  static constexpr double kSmallestDepthStep = 1e-4;
+
   // A depth within this relative distance of the requested one is a root of the depth search.
   static constexpr double kDepthMatch = 1e-5;
 
@@ -121,12 +171,17 @@ class IndentationShooting {
   ScaledSolution solve_at_depth(Stage stage, double d, double f_guess = 0.0) const {
     if (d == 0.0) return solve(stage, 0.0);
     ScaledSolution last_failure;
+    std::optional<ScaledSolution> deepest;  // the deepest state short of d the search met
+    auto keep_if_deepest = [&](const ScaledSolution& sol) {
+      if (sol.ok() && sol.depth < d && (!deepest || sol.depth > deepest->depth)) deepest = sol;
+    };
     auto residual = [&](double f) -> std::optional<double> {
       auto sol = solve(stage, f);
       if (!sol.ok()) {
         last_failure = std::move(sol);
         return std::nullopt;
       }
+      keep_if_deepest(sol);
       return sol.depth - d;
     };
     const double step = f_guess > 0.0 ? 0.5 * f_guess : 0.1;
@@ -136,31 +191,42 @@ class IndentationShooting {
                                     std::numeric_limits<double>::infinity(),
                                     settings().max_iterations,
                                     step);
-    if (!f) {
-      if (last_failure.status == Status::Converged) last_failure.status = Status::NoConvergence;
-      if (last_failure.message.empty())
-        last_failure.message = "no force gives the requested depth";
-      else
-        last_failure.message = "the requested depth cannot be reached: " + last_failure.message;
-      return last_failure;
-    }
-    ScaledSolution sol = solve(stage, *f);
     // The bracket closes either on a root or, when the depth lies beyond every equilibrium of
     // the stage, on the largest force the stage carries (where the residual jumps from the
     // deepest state's to the failure's stand-in).  At a root the depth matches to the
     // shooting's noise (up to ~2e-6 relative at micrometre depths, where the depth goes as the
     // cube root of the force); at the end of the solutions it falls short by the unreachable rest.
-    if (sol.ok() && !(std::abs(sol.depth - d) <= kDepthMatch * d)) {
-      const bool limit = last_failure.status != Status::Converged &&
-                         failure_kind(last_failure.status) == FailureKind::Physical;
-      sol.status = limit ? last_failure.status : Status::NoConvergence;
-      sol.message = limit ? last_failure.message
-                          : "the force bracket closed on the end of the solutions, not on the "
-                            "requested depth: " +
-                                last_failure.message;
-      sol.deepest_state = true;
+    if (f) {
+      ScaledSolution sol = solve(stage, *f);
+      if (sol.ok() && std::abs(sol.depth - d) <= kDepthMatch * d) return sol;
+      keep_if_deepest(sol);
     }
-    return sol;
+    // Near a limit load the depth grows much faster than the force, so the force search may
+    // stop short of the depth although states exist beyond: follow them in depth control.
+    // Only where the states may go on: not past locking (the depth is bounded there while the
+    // force is not) nor into a configuration the model does not cover.
+    const bool may_go_on = last_failure.status == Status::Converged ||
+                           last_failure.status == Status::NoConvergence ||
+                           last_failure.status == Status::LimitLoad;
+    if (deepest && may_go_on)
+      if (auto reached = continue_in_depth(*deepest, d)) return *reached;
+    if (!deepest) {
+      if (last_failure.status == Status::Converged) last_failure.status = Status::NoConvergence;
+      last_failure.message = last_failure.message.empty()
+                                 ? "no force gives the requested depth"
+                                 : "the requested depth cannot be reached: " + last_failure.message;
+      return last_failure;
+    }
+    ScaledSolution out = std::move(*deepest);
+    // Why the states end: the failure beyond them, unless that was the solver's own.
+    const bool explained = last_failure.status != Status::Converged &&
+                           failure_kind(last_failure.status) != FailureKind::Numerical;
+    out.status = explained ? last_failure.status : Status::NoConvergence;
+    out.message = explained ? last_failure.message
+                            : "neither the force search nor depth control reaches it: " +
+                                  last_failure.message;
+    out.deepest_state = true;
+    return out;
   }
 
  private:

@@ -49,6 +49,54 @@ TEST(UnreachableDepth, NeoHookeanEndsAtItsLimitLoad) {
   EXPECT_TRUE(below.ok()) << below.message;
 }
 
+// Near a limit load the force search cannot resolve the depth (it grows without bound as the
+// force approaches the limit): depth control follows the states there.  Neo-Hookean, frictionless
+// sliding: the puncture state found by the force search is reached again by depth.
+TEST(UnreachableDepth, DepthControlFollowsTheStatesNearALimitLoad) {
+  Problem p = paper_problem(NeoHookean{}, 0.0);
+  p.indenter = FlatPunch{4.86};
+  p.geometry.thickness_mm = 0.02936;
+  p.material.shear_modulus_mpa = 0.6708;
+  p.critical_i1 = 118.0;
+  const PuncturePrediction sliding = predict_puncture(p);
+  ASSERT_TRUE(sliding.ok()) << sliding.message;
+  const Equilibrium again = solve_at_depth(p, sliding.depth_mm, Stage::Slip);
+  ASSERT_TRUE(again.ok()) << again.message;
+  // Two routes to one state: the force agrees to the shooting's accuracy near the plateau
+  // (dF/d(depth) ~ 0 there, so the force is insensitive to the depth).
+  EXPECT_NEAR(again.force_n / sliding.force_n, 1.0, 1e-8);
+  EXPECT_NEAR(again.max_first_invariant, p.critical_i1, 1e-3);
+}
+
+// Held until 2.9946 N, this membrane switches at a depth the sliding membrane cannot reach below
+// its limit load; sliding, it reaches the critical I1 already at a smaller depth, so it punctures
+// as it starts sliding: at the held state's force and depth.
+TEST(UnreachableDepth, PuncturesAsItStartsSlidingPastALimitLoad) {
+  Problem p = paper_problem(NeoHookean{}, 0.0);
+  p.indenter = FlatPunch{4.86};
+  p.geometry.thickness_mm = 0.02936;
+  p.material.shear_modulus_mpa = 0.6708;
+  p.critical_i1 = 118.0;
+  const PuncturePrediction sliding_only = predict_puncture(p);
+  ASSERT_TRUE(sliding_only.ok()) << sliding_only.message;
+  p.stick = {StickRule::Force, 2.9946};
+  const StageBoundary b = stick_slip_boundary(p);
+  ASSERT_TRUE(b.ok() && b.switches) << b.message;
+  // The independent fact behind the answer: sliding reaches the criterion before the switch.
+  EXPECT_LT(sliding_only.depth_mm, b.depth_mm);
+  const PuncturePrediction at = predict_puncture(p);
+  ASSERT_TRUE(at.ok()) << at.message;
+  EXPECT_TRUE(at.at_switch);
+  EXPECT_EQ(at.stage, Stage::Stick);
+  EXPECT_NEAR(at.force_n / 2.9946, 1.0, 1e-9);
+  EXPECT_NEAR(at.depth_mm / b.depth_mm, 1.0, 1e-9);
+  const LoadingCurve c = loading_curve(p, {.points = 8});
+  ASSERT_TRUE(c.ok()) << c.message;
+  EXPECT_NEAR(c.points.back().depth_mm / b.depth_mm, 1.0, 1e-12);
+  EXPECT_EQ(c.points.back().stage, Stage::Stick);
+  for (const auto& q : c.points) EXPECT_FALSE(q.beyond_puncture) << q.depth_mm;
+}
+
 TEST(UnreachableForce, GentBeyondLockingIsPhysical) {
   const Equilibrium e = solve_at_force(paper_problem(), 1e8, Stage::Slip);
   EXPECT_EQ(e.status, Status::BeyondLocking) << e.message;
