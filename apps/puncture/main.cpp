@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <memory>
 
 #include "cli_error.hpp"
 #include "command_calibrate.hpp"
@@ -14,6 +15,7 @@
 #include "plot.hpp"
 #include "problem_options.hpp"
 #include "solve_failure.hpp"
+#include "strict_config.hpp"
 
 namespace {
 
@@ -77,6 +79,7 @@ int main(int argc, char** argv) {
                    "long flag names); command-line flags override it")
         ->type_name("FILE");
     app.allow_config_extras(CLI::config_extras_mode::error);
+    app.config_formatter(std::make_shared<StrictConfig>(app));
 
     ProblemFlags problem_flags;
     CurveFlags curve_flags;
