@@ -576,8 +576,20 @@ class FlatPunchContact {
       // At the lowest top stretch, lambda2 -> a, Part I shrinks to the clamp and the residual
       // tends to a - 1 < 0.  (Top stretches below 1 occur on soft laws at large loads: material
       // from beyond the indenter's radius climbs its side, hoop-compressed but taut, s2 > 0.)
-      const double lowest = parameter_floor(Configuration::SlipWithPartTwo) * (1.0 + 1e-9);
-      const double g_low = counted(Configuration::SlipWithPartTwo, lowest).value_or(kBeyondDomain);
+      // With a small indenter (a << A) the top at the clamp needs a hoop stretch a / A so small
+      // that the material locks there: then tops from the onset's downward, a + (onset - a) / 2^k,
+      // until the residual is negative (as for the sphere-tipped probe's side).
+      const double floor = parameter_floor(Configuration::SlipWithPartTwo);
+      double lowest = floor * (1.0 + 1e-9);
+      const auto g_floor = counted(Configuration::SlipWithPartTwo, lowest);
+      double g_low = g_floor.value_or(kBeyondDomain);
+      for (int k = 1; k <= 50 && !g_floor && !(g_low < 0.0); ++k) {
+        const double p = floor + (*onset - floor) / std::ldexp(1.0, k);
+        if (const auto g = counted(Configuration::SlipWithPartTwo, p); g && *g < 0.0) {
+          lowest = p;
+          g_low = *g;
+        }
+      }
       if (g_low >= 0.0) {
         plan.status = std::isfinite(locking_i1_) ? Status::BeyondLocking : Status::LimitLoad;
         plan.message = std::isfinite(locking_i1_)
