@@ -168,7 +168,8 @@ LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
   double end_depth = curve.max_depth_mm;
   if (end_depth <= 0.0) {
     if (!out.puncture.ok()) {
-      out.status = Status::NoConvergence;
+      // The puncture's own failure: physical when the membrane has no puncture point.
+      out.status = out.puncture.status;
       out.message = "cannot end the curve at puncture: " + out.puncture.message;
       return out;
     }

@@ -29,8 +29,15 @@ std::optional<double> first_force_where(const Shooting& shooting, Stage stage, d
     if (!sol.ok()) return std::nullopt;
     return g(sol);
   };
-  return shoot_increasing(
-      residual, f_lo, g_lo, kInf, shooting.settings().max_iterations, std::max(0.25 * f_lo, 0.05));
+  // A stage whose solutions end before the criterion is met closes the bracket on a jump (to the
+  // beyond-root stand-in), where TOMS 748 falls back to bisections: ~3 log2(1 / eps) = 160
+  // iterations to bracket the end to a few ulps, more than one shooting's allowance.
+  return shoot_increasing(residual,
+                          f_lo,
+                          g_lo,
+                          kInf,
+                          4 * shooting.settings().max_iterations,
+                          std::max(0.25 * f_lo, 0.05));
 }
 
 // The stick -> slip boundary with the held state at the switch (when it switches), which the
@@ -178,7 +185,13 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
         critical_value(criterion));
     return out;
   }
-  const auto sol = shooting.solve(stage, *f_puncture);
+  auto sol = shooting.solve(stage, *f_puncture);
+  // A search that closes on the end of the stage's solutions brackets it to a few ulps and may
+  // return the side beyond (no state): the last state is an ulp or two below.
+  for (int k = 0; k < 16 && !sol.ok() && failure_kind(sol.status) == FailureKind::Physical; ++k) {
+    *f_puncture = std::nextafter(*f_puncture, 0.0);
+    sol = shooting.solve(stage, *f_puncture);
+  }
   if (!sol.ok()) {
     out.message = "the state at puncture did not converge: " + sol.message;
     return out;

@@ -57,7 +57,8 @@ class IndentationShooting {
                                        plan.lo,
                                        plan.g_lo,
                                        plan.cap,
-                                       settings().max_iterations);
+                                       settings().max_iterations,
+                                       plan.initial_step);
     if (!root) {
       sol.message = plan.no_root_message;
       sol.evaluations = evals;

@@ -63,6 +63,7 @@ struct ShootingPlan {
   double lo = 0.0;
   double g_lo = 0.0;
   double cap = std::numeric_limits<double>::infinity();
+  double initial_step = 0.0;    // without a cap: the bracket's first step (0: 5% of lo)
   std::string no_root_message;  // what to say when the bracketing finds no root
   bool ok() const { return status == Status::Converged; }
 };

@@ -70,23 +70,30 @@ class FlatPunchContact {
   // Every configuration's parameter exceeds this floor: 1 for the stretches at the edge and of
   // Part III, a / A for the hoop stretch a / R at the top of Part II (R < A).
   double parameter_floor(Configuration configuration) const {
+    if (configuration == Configuration::Stick) return 0.0;
     return configuration == Configuration::SlipWithPartTwo ? s_.a : 1.0;
   }
 
+  // Held at the edge, the parameter is t >= 0, the horizontal component of the line tension
+  // R s1 = sqrt(f^2 + t^2) where Part I leaves the edge (R = a, lambda2 = 1), not the edge
+  // stretch: the end of the held branch is the vertical exit t = 0, where the clamp residual is
+  // linear in t but goes as the square root of the stretch's distance from the vertical exit's;
+  // shooting on the stretch, that distance falls below an ulp (and the clamp residual stalls
+  // ~1e-8) while t still resolves it.
+  std::optional<FreeStart> held_start(double f, double t) const {
+    if (!(t >= 0.0) || !std::isfinite(t)) return std::nullopt;
+    const auto l1 = invert_radial_stress(law_, std::hypot(f, t) / s_.a, 1.0);
+    if (!l1 || !(first_invariant(*l1, 1.0) < locking_i1_)) return std::nullopt;
+    return FreeStart{
+        {t, *l1, 1.0, 0.0}, s_.a, std::atan2(f, t), std::numeric_limits<double>::infinity()};
+  }
+
   std::optional<FreeStart> free_start(Configuration c, double f, double p) const {
+    if (c == Configuration::Stick) return held_start(f, p);
     if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
     switch (c) {
-      case Configuration::Stick: {
-        // R = a, lambda2 = 1, lambda1 = p; R s1 sin(phi) = f fixes the slope.
-        const double rs1 = s_.a * membrane_stress(law_, p, 1.0).s1;
-        // rs1 < f by round-off only at the vertical exit, where t = 0 (near lambda1 = 1 the
-        // inversion loses digits to cancellation, hence the loose bound).
-        if (!(rs1 >= f * (1.0 - 1e-8)) || first_invariant(p, 1.0) >= locking_i1_)
-          return std::nullopt;
-        const double t = std::sqrt(std::max(0.0, (rs1 - f) * (rs1 + f)));
-        return FreeStart{
-            {t, p, 1.0, 0.0}, s_.a, std::atan2(f, t), std::numeric_limits<double>::infinity()};
-      }
+      case Configuration::Stick:
+        break;
       case Configuration::SlipWithoutPartTwo: {
         // Part III stretch p: the corner material sits at R = a / p; the capstan law and the
         // vertical balance give the exit slope.
@@ -522,34 +529,29 @@ class FlatPunchContact {
     return part_one_.residual(f, free_start(c, f, p));
   }
 
-  // Held at the edge: shoot on the edge stretch, from where Part I leaves the edge vertically.
+  // Held at the edge: shoot on t (held_start), from the vertical exit t = 0 upward.
   template <class Residual>
   ShootingPlan stick_plan(double f, Residual& counted) const {
     ShootingPlan plan;
     plan.configuration = Configuration::Stick;
-    // Lowest edge stretch: Part I leaves the edge vertically (R s1 = f).
-    auto l1_vertical = invert_radial_stress(law_, f / s_.a, 1.0);
-    if (!l1_vertical) {
+    if (!held_start(f, 0.0)) {
       plan.status = Status::BeyondLocking;
       plan.message = "the force exceeds what the membrane at the indenter's edge can carry";
       return plan;
     }
-    // At tiny forces s1 ~ lambda1 - 1 loses its digits to cancellation and the inverse may fall
-    // an ulp short of carrying the force (then free_start() rejects the vertical exit): step up
-    // by ulps.
-    for (int k = 0; k < 1000 && s_.a * membrane_stress(law_, *l1_vertical, 1.0).s1 < f; ++k)
-      *l1_vertical = std::nextafter(*l1_vertical, 2.0 * *l1_vertical);
-    const double g0 = counted(Configuration::Stick, *l1_vertical).value_or(kBeyondDomain);
+    const double g0 = counted(Configuration::Stick, 0.0).value_or(kBeyondDomain);
     if (g0 >= 0.0) {
       plan.status = Status::StickWrapsSide;
       plan.message =
           "at this force a membrane held at the indenter's edge would have to wrap its side";
       return plan;
     }
-    plan.lo = *l1_vertical;
+    plan.lo = 0.0;
     plan.g_lo = g0;
-    plan.cap = locking_radial_stretch(law_, 1.0);
-    plan.no_root_message = "stick shooting found no edge stretch meeting the clamp condition";
+    // Every law's s1 grows without bound (towards locking, or as a power of the stretch), so t
+    // has no cap; steps doubling from f (a 45 degree exit) bracket it.
+    plan.initial_step = f;
+    plan.no_root_message = "stick shooting found no edge tension meeting the clamp condition";
     return plan;
   }
 
