@@ -34,6 +34,17 @@ std::optional<double> shoot_increasing(Residual&& g, double lo, double g_lo, dou
     step *= 2.0;
     g_hi = residual_or_beyond(g, hi);
   }
+  // Halving towards a cap never evaluates the cap itself, where the root lies when it is the
+  // bracket's end (e.g. a Part II of zero length at the force where it appears).  A cap outside
+  // the domain (a locking stretch) is no root.
+  if (g_hi < 0.0 && bounded) {
+    if (const std::optional<double> g_cap = g(cap); g_cap && *g_cap >= 0.0) {
+      lo = hi;
+      g_lo = g_hi;
+      hi = cap;
+      g_hi = *g_cap;
+    }
+  }
   if (g_hi < 0.0) return std::nullopt;
   if (g_hi == 0.0) return hi;
   std::uintmax_t iterations = static_cast<std::uintmax_t>(max_iterations);
