@@ -38,9 +38,11 @@
 //
 // Adding an indenter: a contact model with these members, an alternative in the dispatch
 // (indentation/dispatch.hpp); the shooting and the loading-curve driver are unchanged.
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "numerics/shooting.hpp"
 #include "puncture/equilibrium.hpp"
@@ -67,6 +69,23 @@ struct ShootingPlan {
   std::string no_root_message;  // what to say when the bracketing finds no root
   bool ok() const { return status == Status::Converged; }
 };
+
+// Where the bracket on lambda2 at the top of the side contact (Part II) starts: at its floor a / A
+// the top is at the clamp and the residual tends to a / A - 1 < 0, unless the probe is so small
+// (a << A) that the material locks there; then tops from the cap downward, floor + (cap - floor)
+// / 2^k, until the residual is negative.  {lo, g(lo)}; g(lo) >= 0 (or the beyond-domain stand-in)
+// when no top below the cap has a negative residual.
+template <class Residual>
+std::pair<double, double> side_bracket_start(Residual& counted, double floor, double cap) {
+  const double lowest = floor * (1.0 + 1e-9);
+  if (const auto g_floor = counted(Configuration::SlipWithPartTwo, lowest))
+    return {lowest, *g_floor};
+  for (int k = 1; k <= 50; ++k) {
+    const double p = floor + (cap - floor) / std::ldexp(1.0, k);
+    if (const auto g = counted(Configuration::SlipWithPartTwo, p); g && *g < 0.0) return {p, *g};
+  }
+  return {lowest, kBeyondDomain};
+}
 
 // The force at which a contact changes configuration (slip_change): the first root of an
 // onset indicator, negative at small forces, found by bracketing upward from a force far below

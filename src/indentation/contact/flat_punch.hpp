@@ -92,8 +92,6 @@ class FlatPunchContact {
     if (c == Configuration::Stick) return held_start(f, p);
     if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
     switch (c) {
-      case Configuration::Stick:
-        break;
       case Configuration::SlipWithoutPartTwo: {
         // Part III stretch p: the corner material sits at R = a / p; the capstan law and the
         // vertical balance give the exit slope.
@@ -117,6 +115,7 @@ class FlatPunchContact {
         if (!l1) return std::nullopt;
         return FreeStart{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPi, std::exp(s_.mu * kHalfPi)};
       }
+      case Configuration::Stick:  // held_start
       case Configuration::Unloaded:
         break;
     }
@@ -578,20 +577,9 @@ class FlatPunchContact {
       // At the lowest top stretch, lambda2 -> a, Part I shrinks to the clamp and the residual
       // tends to a - 1 < 0.  (Top stretches below 1 occur on soft laws at large loads: material
       // from beyond the indenter's radius climbs its side, hoop-compressed but taut, s2 > 0.)
-      // With a small indenter (a << A) the top at the clamp needs a hoop stretch a / A so small
-      // that the material locks there: then tops from the onset's downward, a + (onset - a) / 2^k,
-      // until the residual is negative (as for the sphere-tipped probe's side).
-      const double floor = parameter_floor(Configuration::SlipWithPartTwo);
-      double lowest = floor * (1.0 + 1e-9);
-      const auto g_floor = counted(Configuration::SlipWithPartTwo, lowest);
-      double g_low = g_floor.value_or(kBeyondDomain);
-      for (int k = 1; k <= 50 && !g_floor && !(g_low < 0.0); ++k) {
-        const double p = floor + (*onset - floor) / std::ldexp(1.0, k);
-        if (const auto g = counted(Configuration::SlipWithPartTwo, p); g && *g < 0.0) {
-          lowest = p;
-          g_low = *g;
-        }
-      }
+      // (A small indenter's top at the clamp is past locking: side_bracket_start.)
+      const auto [lowest, g_low] =
+          side_bracket_start(counted, parameter_floor(Configuration::SlipWithPartTwo), *onset);
       if (g_low >= 0.0) {
         plan.status = std::isfinite(locking_i1_) ? Status::BeyondLocking : Status::LimitLoad;
         plan.message = std::isfinite(locking_i1_)

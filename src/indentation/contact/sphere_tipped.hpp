@@ -351,20 +351,9 @@ class SphereTippedContact {
       // The side exists: shoot on lambda2 where Part I leaves it, between a / A (the top at the
       // clamp, residual a / A - 1 < 0) and the equator's lambda2.
       plan.configuration = Configuration::SlipWithPartTwo;
-      // With a small probe (a << A) the top at the clamp needs a hoop stretch a / A so small that
-      // the material locks there: then tops from the equator's downward, 1 + (top - 1) / 2^k in
-      // lambda2 above a / A, until the residual is negative.
+      // (A small probe's top at the clamp is past locking: side_bracket_start.)
       const double cap = s_.a / onset->end.r;
-      double lowest = s_.a * (1.0 + 1e-9);
-      double g_low = counted(Configuration::SlipWithPartTwo, lowest).value_or(kBeyondDomain);
-      for (int k = 1; k <= 50 && !(g_low < 0.0); ++k) {
-        const double p = s_.a + (cap - s_.a) / std::ldexp(1.0, k);
-        const auto g = counted(Configuration::SlipWithPartTwo, p);
-        if (g && *g < 0.0) {
-          lowest = p;
-          g_low = *g;
-        }
-      }
+      const auto [lowest, g_low] = side_bracket_start(counted, s_.a, cap);
       if (!(g_low < 0.0)) {
         plan.status = Status::BeyondLocking;
         plan.message = "the force is beyond what the membrane on the sphere-tipped probe can carry";
