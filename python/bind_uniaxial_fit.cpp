@@ -143,7 +143,11 @@ void bind_uniaxial(py::module_& m) {
           fit = fit_uniaxial(data, chosen);
         });
         if (!fit.ok())
-          raise_solver_error(fit.status, fit.message, "the fit did not converge: " + fit.message);
+          raise_solver_error(fit.status,
+                             fit.message,
+                             fit.status == Status::NoConvergence
+                                 ? "the fit did not converge: " + fit.message
+                                 : fit.message);
         return fit;
       },
       py::arg("stretch"),

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Installs the Debian packages puncture needs to build, test and benchmark, and for the Python
+# Installs the Debian packages puncture needs to build, test and benchmark (Ceres Solver: the
+# bounded least squares of the fits), and for the Python
 # bindings and plots (scipy: an independent check of the inflation solver in the Python tests).
 set -euo pipefail
 packages=(build-essential cmake libboost-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
-          libfmt-dev libgtest-dev libbenchmark-dev librapidcheck-dev
+          libfmt-dev libgtest-dev libbenchmark-dev librapidcheck-dev libceres-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-matplotlib
           python3-pytest python3-scipy)
 missing=()

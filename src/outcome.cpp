@@ -24,6 +24,8 @@ std::string to_string(Status s) {
       return "checks failed";
     case Status::OutsideModel:
       return "outside the model";
+    case Status::OnBound:
+      return "on a bound";
   }
   return "?";
 }
@@ -36,6 +38,7 @@ FailureKind failure_kind(Status s) {
     case Status::LimitLoad:
     case Status::StickWrapsSide:
     case Status::NotReached:
+    case Status::OnBound:  // the data are not those of the law in its range
       return FailureKind::Physical;
     case Status::OutsideModel:
       return FailureKind::OutsideModel;

@@ -305,8 +305,9 @@ std::string run_fit_uniaxial(const CLI::App& app, const ProblemFlags& pf, const 
   } catch (const std::invalid_argument& e) {
     rethrow_as_input(e, f.uniaxial_data.c_str());
   }
-  if (!report.fit.ok())
+  if (report.fit.status == Status::NoConvergence)
     throw SolveError("the fit did not converge: " + report.fit.message, report.fit.status);
+  if (!report.fit.ok()) throw SolveError(report.fit.message, report.fit.status);
   return calibration_text(report, format);
 }
 

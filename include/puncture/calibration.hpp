@@ -191,7 +191,10 @@ struct FittedParameter {
   std::string note;  // why not identifiable, or what the value means
 };
 
-struct UniaxialFit : Outcome {  // message: the optimiser's stop reason when not converged
+// status: Converged; OnBound (the best fit inside the law's range is on its edge: the law does
+// not describe the data; the parameters are that edge's); NoConvergence (message: the
+// optimiser's stop reason).
+struct UniaxialFit : Outcome {
   FitLaw law = FitLaw::Gent;
   // The best fit as a material the solver accepts; empty when it is not one (Gent with
   // c = 1/J_lim <= 0, Mooney-Rivlin alpha outside [0, 1), G <= 0).
@@ -214,11 +217,13 @@ struct UniaxialFit : Outcome {  // message: the optimiser's stop reason when not
 };
 
 struct UniaxialFitOptions {
-  int max_function_evaluations = 2000;
+  int max_iterations = 500;  // Levenberg-Marquardt steps (a fit takes 5-30)
 };
 
 // Needs more points than parameters, stretches > 0 and a positive stress somewhere; throws
-// std::invalid_argument otherwise.
+// std::invalid_argument otherwise.  The parameters stay inside the law's validity range (G > 0,
+// Mooney-Rivlin 0 <= alpha <= 1, Gent 0 <= 1/J_lim < 1/(I1 - 3) at the largest stretch); a
+// best fit on one of these bounds is Status::OnBound, its message says which and why.
 UniaxialFit fit_uniaxial(const std::vector<UniaxialPoint>& data, FitLaw law,
                          const UniaxialFitOptions& options = {});
 

@@ -25,6 +25,7 @@ enum class Status {
   Incomplete,      // some of the evaluations behind the result failed; the message lists them
   ChecksFailed,    // a verification check is outside its tolerance
   OutsideModel,    // the state needs what this indenter's model does not cover (message: what)
+  OnBound,         // a fit's optimum is on a bound of the law's validity range (message: which)
 };
 
 std::string to_string(Status status);

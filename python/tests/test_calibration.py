@@ -342,3 +342,18 @@ def test_band_errors_match_cli(cli):
         pu.puncture_band(pu.Problem(), friction="wide")
     with pytest.raises(ValueError, match="^invalid input:\n  friction: "):
         pu.puncture_band(pu.Problem(friction=-1), critical_i1=(90, 100))
+
+
+def test_uniaxial_fit_on_a_bound_matches_cli(cli):
+    # Stiffening Gent data fitted with Mooney-Rivlin: the best fit in 0 <= alpha <= 1 is on
+    # alpha = 0, a physical failure with the CLI's message (which ran away unbounded before).
+    rc, message = cli_error(cli, "fit", "uniaxial", str(DATA / "uniaxial_gent.csv"),
+                            "--material", "mooney-rivlin")
+    assert rc == 2
+    points = pu.uniaxial_points_from_csv(str(DATA / "uniaxial_gent.csv"))
+    with pytest.raises(pu.SolverError) as info:
+        pu.fit_uniaxial(points[0], points[1], "mooney-rivlin")
+    assert str(info.value) == message
+    assert info.value.status == pu.Status.OnBound
+    assert info.value.failure_kind == pu.FailureKind.Physical
+    assert "alpha = 0" in message

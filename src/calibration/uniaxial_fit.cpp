@@ -3,24 +3,26 @@
 // Model: nominal stress P = G g(lambda) m(lambda; theta), g = lambda - lambda^-2 (neo-Hookean),
 //   Gent:          m = 1 / (1 - c k),  k = I1 - 3 = lambda^2 + 2/lambda - 3,  c = 1 / J_lim
 //   Mooney-Rivlin: m = 1 - alpha + alpha / lambda
-// (the uniaxial_stress of each law; the tests check the two agree).  Eigen's Levenberg-Marquardt
-// (MINPACK's lmder) minimises sum (P_model - P_data)^2 with the analytic Jacobian; the standard
-// errors are sigma sqrt(diag((J^T J)^-1)) at the optimum, sigma^2 = SSR / (n - p).
+// (the uniaxial_stress of each law; the tests check the two agree).  Ceres' Levenberg-Marquardt
+// minimises sum (P_model - P_data)^2 with the analytic Jacobian inside each law's validity range
+// (bounds: G > 0; Mooney-Rivlin 0 <= alpha <= 1; Gent 0 <= c < 1 / (I1 - 3) of the largest
+// stretch, where the data would lock).  An unbounded fit can run off to parameters no solver
+// accepts (Mooney-Rivlin alpha = -5e4 on stiffening data); a best fit on a bound is reported as
+// Status::OnBound.  The standard errors are sigma sqrt(diag((J^T J)^-1)) at an interior
+// optimum, sigma^2 = SSR / (n - p).
+#include <ceres/ceres.h>
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <unsupported/Eigen/NonLinearOptimization>
 
 #include "puncture/calibration.hpp"
 
 namespace puncture {
 
 namespace {
-
-constexpr double kHugeResidual = 1e10;  // returned where Gent would lock: LM rejects the step
 
 struct Data {
   Eigen::VectorXd stretch, stress, g, k, inv;  // lambda, P, lambda - lambda^-2, I1 - 3, 1/lambda
@@ -46,17 +48,18 @@ Data prepare(const std::vector<UniaxialPoint>& points) {
 
 int parameter_count(FitLaw law) { return law == FitLaw::NeoHookean ? 1 : 2; }
 
-// Residuals and Jacobian in Eigen's functor protocol (negative return: stop).
+// Residuals and their Jacobian; false where Gent would lock (the minimiser then shortens the step).
 struct Residuals {
   const Data& d;
   FitLaw law;
   int values() const { return static_cast<int>(d.stretch.size()); }
   int inputs() const { return parameter_count(law); }
+  bool locks(double c) const { return ((1.0 - c * d.k.array()) <= 0.0).any(); }
   Eigen::ArrayXd mooney_rivlin_factor(double alpha) const {
     return (1.0 - alpha) + alpha * d.inv.array();
   }
 
-  int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
+  bool operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
     const double G = x[0];
     switch (law) {
       case FitLaw::NeoHookean:
@@ -65,20 +68,15 @@ struct Residuals {
       case FitLaw::MooneyRivlin:
         r = (G * d.g.array() * mooney_rivlin_factor(x[1])).matrix() - d.stress;
         break;
-      case FitLaw::Gent: {
-        const Eigen::ArrayXd denom = 1.0 - x[1] * d.k.array();
-        if ((denom <= 1e-12).any()) {
-          r.setConstant(values(), kHugeResidual);
-          break;
-        }
-        r = (G * d.g.array() / denom).matrix() - d.stress;
+      case FitLaw::Gent:
+        if (locks(x[1])) return false;
+        r = (G * d.g.array() / (1.0 - x[1] * d.k.array())).matrix() - d.stress;
         break;
-      }
     }
-    return 0;
+    return true;
   }
 
-  int df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) const {
+  void df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) const {
     jac.resize(values(), inputs());
     switch (law) {
       case FitLaw::NeoHookean:
@@ -89,15 +87,69 @@ struct Residuals {
         jac.col(1) = (x[0] * d.g.array() * (d.inv.array() - 1.0)).matrix();
         break;
       case FitLaw::Gent: {
-        const Eigen::ArrayXd denom = (1.0 - x[1] * d.k.array()).max(1e-12);
+        const Eigen::ArrayXd denom = 1.0 - x[1] * d.k.array();
         jac.col(0) = (d.g.array() / denom).matrix();
         jac.col(1) = (x[0] * d.g.array() * d.k.array() / denom.square()).matrix();
         break;
       }
     }
-    return 0;
   }
 };
+
+// The residuals as one Ceres residual block over the parameter block (G, alpha or c).
+class StressResiduals : public ceres::CostFunction {
+ public:
+  explicit StressResiduals(const Residuals& residuals) : residuals_(residuals) {
+    set_num_residuals(residuals.values());
+    mutable_parameter_block_sizes()->push_back(residuals.inputs());
+  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(parameters[0], residuals_.inputs());
+    Eigen::VectorXd r(residuals_.values());
+    if (!residuals_(x, r)) return false;
+    Eigen::Map<Eigen::VectorXd>(residuals, residuals_.values()) = r;
+    if (jacobians && jacobians[0]) {
+      Eigen::MatrixXd jac;
+      residuals_.df(x, jac);
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          jacobians[0], residuals_.values(), residuals_.inputs()) = jac;
+    }
+    return true;
+  }
+
+ private:
+  const Residuals& residuals_;
+};
+
+// The law's validity range as bounds of each parameter, and its scale (for "on the bound").
+struct Bound {
+  double lower, upper, scale;
+};
+
+std::vector<Bound> validity_bounds(const Data& d, FitLaw law, double g_scale) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  // G > 0: a floor far below any modulus the data could give (the stress scale's 1e-12).
+  std::vector<Bound> bounds{{1e-12 * g_scale, inf, g_scale}};
+  if (law == FitLaw::MooneyRivlin) bounds.push_back({0.0, 1.0, 1.0});
+  if (law == FitLaw::Gent) {
+    // c < 1/(I1 - 3) at the largest stretch, or the data's last point is at or past locking.
+    const double c_lock = 1.0 / d.k.maxCoeff();
+    bounds.push_back({0.0, (1.0 - 1e-6) * c_lock, c_lock});
+  }
+  return bounds;
+}
+
+// The index of the first parameter that ended on one of its bounds, if any.
+std::optional<int> on_bound(const Eigen::VectorXd& x, const std::vector<Bound>& bounds) {
+  for (int i = 0; i < static_cast<int>(bounds.size()); ++i) {
+    const double tol = 1e-9 * bounds[static_cast<std::size_t>(i)].scale;
+    if (x[i] <= bounds[static_cast<std::size_t>(i)].lower + tol ||
+        x[i] >= bounds[static_cast<std::size_t>(i)].upper - tol)
+      return i;
+  }
+  return std::nullopt;
+}
 
 // A starting point from linear least squares: the neo-Hookean G; for Mooney-Rivlin the exact
 // optimum of P = A g + B g / lambda (linear in A = G (1 - alpha), B = G alpha); for Gent the
@@ -147,18 +199,79 @@ std::optional<Eigen::MatrixXd> covariance(const Eigen::MatrixXd& jac, double sig
          norms.cwiseInverse().asDiagonal();
 }
 
-std::string status_text(Eigen::LevenbergMarquardtSpace::Status status) {
-  using S = Eigen::LevenbergMarquardtSpace::Status;
-  switch (status) {
-    case S::TooManyFunctionEvaluation:
-      return "Levenberg-Marquardt stopped: too many function evaluations";
-    case S::ImproperInputParameters:
-      return "Levenberg-Marquardt: improper input parameters";
-    case S::UserAsked:
-      return "Levenberg-Marquardt stopped by the residual function";
-    default:
-      return "";
+struct LeastSquares {
+  bool converged = false;
+  int iterations = 0;
+  std::string message;          // Ceres' stop reason
+  std::optional<int> on_bound;  // the parameter held on its bound at the optimum
+};
+
+// One Ceres Levenberg-Marquardt run from x within the bounds, with parameter `held` (if any)
+// kept at its value.
+bool run_levenberg_marquardt(const Residuals& functor, const std::vector<Bound>& bounds,
+                             Eigen::VectorXd& x, std::optional<int> held, int max_iterations,
+                             LeastSquares& out) {
+  ceres::Problem problem;
+  problem.AddResidualBlock(new StressResiduals(functor), nullptr, x.data());
+  if (held) {
+    if (x.size() == 1) return true;  // nothing left to fit
+    problem.SetManifold(x.data(), new ceres::SubsetManifold(static_cast<int>(x.size()), {*held}));
   }
+  for (int i = 0; i < x.size(); ++i) {
+    problem.SetParameterLowerBound(x.data(), i, bounds[static_cast<std::size_t>(i)].lower);
+    if (std::isfinite(bounds[static_cast<std::size_t>(i)].upper))
+      problem.SetParameterUpperBound(x.data(), i, bounds[static_cast<std::size_t>(i)].upper);
+  }
+  ceres::Solver::Options options;
+  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = max_iterations;
+  // Stop on the step only (relative 1e-14): the cost is flat at the optimum, so a test on its
+  // decrease stops early (1e-8 short of the optimum in 1/J_lim on a noisy test).
+  options.function_tolerance = 1e-30;
+  options.parameter_tolerance = 1e-14;
+  options.gradient_tolerance = 1e-30;
+  options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  out.iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
+  out.message = summary.message;
+  return summary.termination_type == ceres::CONVERGENCE;
+}
+
+// The least-squares optimum inside the bounds (an active-set method over Ceres' bounded
+// Levenberg-Marquardt).  Ceres' projected steps creep along an active bound and stop short of
+// the optimum on it, so a run that ends on a bound is followed by one on that face (the
+// parameter held at its bound); the bound is kept when the cost rises into the range there
+// (the Karush-Kuhn-Tucker sign of the gradient), else the search starts again just inside.
+LeastSquares least_squares_in_range(const Residuals& functor, const std::vector<Bound>& bounds,
+                                    Eigen::VectorXd& x, int max_iterations) {
+  LeastSquares out;
+  for (int round = 0; round < 3; ++round) {
+    if (!run_levenberg_marquardt(functor, bounds, x, std::nullopt, max_iterations, out)) return out;
+    const auto i = on_bound(x, bounds);
+    if (!i) {
+      out.converged = true;
+      return out;
+    }
+    const auto& b = bounds[static_cast<std::size_t>(*i)];
+    const bool lower = x[*i] - b.lower <= b.upper - x[*i];
+    x[*i] = lower ? b.lower : b.upper;
+    if (!run_levenberg_marquardt(functor, bounds, x, i, max_iterations, out)) return out;
+    Eigen::VectorXd r(functor.values());
+    Eigen::MatrixXd jac;
+    functor(x, r);
+    functor.df(x, jac);
+    const double slope = jac.col(*i).dot(r);  // half the cost's derivative along parameter i
+    if (lower ? slope >= 0.0 : slope <= 0.0) {
+      out.converged = true;
+      out.on_bound = i;
+      return out;
+    }
+    x[*i] += (lower ? 1e-3 : -1e-3) * b.scale;
+  }
+  out.message = "the optimum moves on and off a bound of the law's range";
+  return out;
 }
 
 // More than two standard errors from zero.
@@ -166,13 +279,33 @@ bool determined(double value, const std::optional<double>& se) {
   return se && 2.0 * *se < std::abs(value);
 }
 
-bool converged(Eigen::LevenbergMarquardtSpace::Status status) {
-  using S = Eigen::LevenbergMarquardtSpace::Status;
-  // 1-4: the tolerances are met; 6-8: no further progress is possible at machine precision,
-  // which happens at an exact fit (noise-free data).
-  return status == S::RelativeReductionTooSmall || status == S::RelativeErrorTooSmall ||
-         status == S::RelativeErrorAndReductionTooSmall || status == S::CosinusTooSmall ||
-         status == S::FtolTooSmall || status == S::XtolTooSmall || status == S::GtolTooSmall;
+// Why the best fit on a bound says the law does not describe the data inside its range.
+std::string on_bound_message(FitLaw law, int index, const Eigen::VectorXd& x,
+                             const std::vector<Bound>& bounds) {
+  const auto& b = bounds[static_cast<std::size_t>(index)];
+  const bool lower = x[index] - b.lower <= b.upper - x[index];
+  const auto where =
+      fmt::format("the best {} fit lies on a bound of the law's validity range: ", to_string(law));
+  if (index == 0)
+    return where + fmt::format("G = {:.4g} MPa, its floor; the data do not describe a {} material",
+                               x[0],
+                               to_string(law));
+  if (law == FitLaw::MooneyRivlin)
+    return where + (lower ? fmt::format("alpha = 0 (G = {:.4g} MPa): the data stiffen with the "
+                                        "stretch more than neo-Hookean, which no Mooney-Rivlin "
+                                        "material does (fit the gent law)",
+                                        x[0])
+                          : fmt::format("alpha = 1 (G = {:.4g} MPa): the data soften with the "
+                                        "stretch more than any Mooney-Rivlin material",
+                                        x[0]));
+  return where +
+         (lower ? fmt::format("1/J_lim = 0, neo-Hookean (G = {:.4g} MPa): the data show no Gent "
+                              "stiffening (fit the neo-hookean law, or calibrate J_lim from a "
+                              "puncture test)",
+                              x[0])
+                : fmt::format("J_lim = {:.4g}, the largest I1 - 3 of the data: they stiffen "
+                              "faster than a Gent material can, locking at the last point",
+                              1.0 / b.scale));
 }
 
 }  // namespace
@@ -283,23 +416,24 @@ UniaxialFit fit_uniaxial(const std::vector<UniaxialPoint>& points, FitLaw law,
         "the stresses do not grow with the stretch: no positive shear modulus fits them");
 
   Residuals functor{d, law};
-  Eigen::LevenbergMarquardt<Residuals> lm(functor);
-  lm.parameters.maxfev = options.max_function_evaluations;
-  lm.parameters.xtol = 1e-12;
-  lm.parameters.ftol = 1e-14;
   Eigen::VectorXd x = start(d, law);
-  const auto lm_status = lm.minimize(x);
+  const auto bounds = validity_bounds(d, law, x[0]);
+  for (int i = 0; i < x.size(); ++i)
+    x[i] = std::clamp(
+        x[i], bounds[static_cast<std::size_t>(i)].lower, bounds[static_cast<std::size_t>(i)].upper);
+  const auto solved = least_squares_in_range(functor, bounds, x, options.max_iterations);
 
   UniaxialFit fit;
   fit.law = law;
   fit.points = static_cast<int>(points.size());
-  fit.iterations = static_cast<int>(lm.iter);
-  fit.status = converged(lm_status) && x.allFinite() ? Status::Converged : Status::NoConvergence;
-  fit.message = status_text(lm_status);
-  if (!fit.ok()) {
-    if (fit.message.empty()) fit.message = "Levenberg-Marquardt did not converge";
+  fit.iterations = solved.iterations;
+  if (!solved.converged || !x.allFinite()) {
+    fit.status = Status::NoConvergence;
+    fit.message = "Levenberg-Marquardt did not converge: " + solved.message;
     return fit;
   }
+  fit.status = solved.on_bound ? Status::OnBound : Status::Converged;
+  if (solved.on_bound) fit.message = on_bound_message(law, *solved.on_bound, x, bounds);
 
   Eigen::VectorXd r(d.stress.size());
   functor(x, r);
