@@ -34,12 +34,12 @@ struct FreeMembraneSystem {
 
   void operator()(const State& x, State& dx, double r_ref) const {
     const double t = x[0], l1 = Layout::lambda1(x), l2 = Layout::lambda2(x);
-    if (!(l1 > 0.0) || !(l2 > 0.0)) throw IntegrationFailure{};
+    if (!(l1 > 0.0) || !(l2 > 0.0)) return outside_domain(dx);
     const auto st = membrane_stress(law, l1, l2);
     // s1 grows with lambda1 at fixed lambda2 for every law here; the lambda1 equation divides by
     // ds1/dlambda1.
     if (!(st.i1 < locking_i1) || !(st.ds1_dl1 > 0.0) || !std::isfinite(st.ds1_dl1))
-      throw IntegrationFailure{};
+      return outside_domain(dx);
     const double r = l2 * r_ref;
     const double g = load.vertical(r);
     const double s_total = Layout::resultant(t, g);

@@ -79,6 +79,7 @@ typename InteriorMaximum<State>::Maximum refined_maximum(const InteriorMaximum<S
         [&](double ra, const State& xa, double rb) {
           State out;
           rk.do_step(system, xa, ra, out, rb - ra);
+          if (!all_finite(out)) throw IntegrationFailure{};
           return out;
         },
         value);

@@ -82,7 +82,8 @@ std::string name_of(const MaterialLaw& law) {
   return std::visit([](const auto& l) { return std::string(l.name()); }, law);
 }
 
-// Both systems at one point: both throw, or neither does and every component has the same bits.
+// Both systems at one point: both leave the domain (the reference throws, the library's returns
+// NaN), or neither does and every component has the same bits.
 // True when neither threw (the point is inside the material's domain).
 template <class State, class A, class B>
 bool expect_same_bits(const A& a, const B& b, const State& x, double r_ref,
@@ -94,11 +95,8 @@ bool expect_same_bits(const A& a, const B& b, const State& x, double r_ref,
   } catch (const IntegrationFailure&) {
     threw_a = true;
   }
-  try {
-    b(x, db, r_ref);
-  } catch (const IntegrationFailure&) {
-    threw_b = true;
-  }
+  b(x, db, r_ref);
+  threw_b = !all_finite(db);  // the library's systems return NaN outside the domain
   EXPECT_EQ(threw_a, threw_b) << where;
   if (threw_a || threw_b) return false;
   for (std::size_t k = 0; k < x.size(); ++k)

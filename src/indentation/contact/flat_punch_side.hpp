@@ -24,9 +24,9 @@ struct PartTwoSystem {
 
   void operator()(const PartTwoState& x, PartTwoState& dx, double r_ref) const {
     const double l1 = x[0], l2 = a / r_ref;
-    if (!(l1 > 0.0)) throw IntegrationFailure{};
+    if (!(l1 > 0.0)) return outside_domain(dx);
     const auto st = membrane_stress(law, l1, l2);
-    if (!(st.i1 < locking_i1) || !std::isfinite(st.ds1_dl1)) throw IntegrationFailure{};
+    if (!(st.i1 < locking_i1) || !std::isfinite(st.ds1_dl1)) return outside_domain(dx);
     const double dl2 = -l2 / r_ref;
     // Ring balance: d(R s1)/dR = mu s2.  Paper Eq. (18): ds1/dR = mu lambda2 s2 / a = mu s2 / R.
     const double ds1 = equation == PartTwoEquation::RingBalance ? (mu * st.s2 - st.s1) / r_ref

@@ -63,10 +63,10 @@ struct SphereCapSystem {
   void operator()(const SphereCapState& x, SphereCapState& dx, double r_ref) const {
     const double theta = x[0], l1 = x[1];
     const double l2 = a * std::sin(theta) / r_ref;
-    if (!(l1 > 0.0) || !(l2 > 0.0)) throw IntegrationFailure{};
+    if (!(l1 > 0.0) || !(l2 > 0.0)) return outside_domain(dx);
     const auto st = membrane_stress(law, l1, l2);
     if (!(st.i1 < locking_i1) || !(st.ds1_dl1 > 0.0) || !std::isfinite(st.ds1_dl1))
-      throw IntegrationFailure{};
+      return outside_domain(dx);
     const double dl2 = (l1 * std::cos(theta) - l2) / r_ref;
     dx[0] = l1 / a;
     // d(R s1)/dR = s2 cos(theta) + mu p r lambda1, p r lambda1 = sin(theta) (s1 l1 / l2 + s2).
