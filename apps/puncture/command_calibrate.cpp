@@ -477,6 +477,9 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
       "force_n,displacement_mm with the specimen's --specimen-width, --specimen-thickness\n"
       "and --gauge-length [mm] (stretch = 1 + displacement / gauge length, nominal stress =\n"
       "force / (width thickness)).  --material chooses the law.\n"
+      "The parameters stay in the law's range (G > 0; mooney-rivlin 0 <= alpha <= 1;\n"
+      "gent 0 <= 1/J_lim < 1/(I1 - 3) at the largest stretch); a best fit on the edge of\n"
+      "that range means the law does not describe the data: exit 2, saying which edge.\n"
       "Example:\n"
       "  puncture fit uniaxial tensile.csv --material gent --specimen-width 10 \\\n"
       "      --specimen-thickness 0.2 --gauge-length 60");

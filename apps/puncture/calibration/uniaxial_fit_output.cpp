@@ -68,7 +68,7 @@ std::string summary(const UniaxialFitReport& r) {
                      num(r.specimen->gauge_length_mm, "gauge length")));
   line(out, "law", to_string(f.law));
   out +=
-      "Least-squares fit of the nominal stress (Levenberg-Marquardt; standard errors\n"
+      "Least-squares fit of the nominal stress (bounded Levenberg-Marquardt; standard errors\n"
       "sigma sqrt(diag (J^T J)^-1), sigma^2 = sum of squared residuals / (n - p))\n";
   bool all_identifiable = true;
   for (const auto& p : f.parameters) {
