@@ -57,6 +57,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
   Predictor predictor;
   Stage segment_stage = boundary.first_stage;
   Configuration last_configuration = Configuration::Unloaded;
+  std::optional<double> last_contact_q;  // the last point's contact quantity (DepthControl)
   auto stage_at = [&](double depth) {
     if (boundary.first_stage == Stage::Slip) return Stage::Slip;
     if (!boundary.switches || depth <= boundary.depth_mm) return Stage::Stick;
@@ -99,6 +100,13 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
         }
       }
       sol = newton.solve(c, d, guess[0], guess[1]);
+      if (!sol && last_contact_q && c == last_configuration &&
+          shooting.control_of(c) == DepthControl::Contact) {
+        // Near a limit load the force Newton's steps cross it: the contact's own quantity, from
+        // the last point's, takes the depth instead.
+        DepthNewton<Shooting> contact_newton(shooting, curve_tol, false, DepthControl::Contact);
+        sol = contact_newton.solve(c, d, *last_contact_q, guess[1]);
+      }
     }
     if (!sol) {
       newton.reset();
@@ -114,6 +122,9 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     if (sol->configuration != Configuration::Unloaded)
       predictor.history.push_back({d, sol->f, sol->parameter});
     last_configuration = sol->configuration;
+    last_contact_q.reset();
+    if (shooting.control_of(sol->configuration) == DepthControl::Contact)
+      last_contact_q = sol->part_three_stretch;
     CurvePoint pt;
     pt.depth_mm = depth;
     pt.force_n = sol->f * scale;

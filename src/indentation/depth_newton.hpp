@@ -16,18 +16,30 @@
 
 namespace puncture::detail {
 
-// Shooting: an IndentationShooting (its assemble() and parameter_floor()).
+// The unknowns besides the shooting parameter p: the force f, or the contact model's own
+// quantity q > p (IndentationShooting::assemble_at_contact; the flat punch's Part III stretch
+// with Part II), Newton then on (log(q - p), log(p - p0)).  Near a limit load the depth runs
+// away from the force (~1e-9 of it moves the depth by 1e-1) but not from q.
+enum class DepthControl { Force, Contact };
+
+// Shooting: an IndentationShooting (its assemble(), assemble_at_contact() and parameter_floor()).
 template <class Shooting>
 class DepthNewton {
  public:
-  DepthNewton(const Shooting& solver, double residual_tol) : solver_(solver), tol_(residual_tol) {}
+  // With `record`, every state is integrated with its fields sampled (steps no longer than the
+  // samples' spacing): a state reported with its fields then meets the depth itself.
+  DepthNewton(const Shooting& solver, double residual_tol, bool record = false,
+              DepthControl control = DepthControl::Force)
+      : solver_(solver), tol_(residual_tol), record_(record), control_(control) {}
 
   // Forget the Jacobian (a new configuration starts).
   void reset() { have_jacobian_ = false; }
 
-  std::optional<ScaledSolution> solve(Configuration c, double depth, double f, double p) {
+  // From (f, p), or (q, p) under contact control.
+  std::optional<ScaledSolution> solve(Configuration c, double depth, double f_or_q, double p) {
     floor_ = solver_.parameter_floor(c);
-    Eigen::Vector2d x(std::log(f), std::log(p - floor_));
+    Eigen::Vector2d x(std::log(control_ == DepthControl::Force ? f_or_q : f_or_q - p),
+                      std::log(p - floor_));
     if (!x.allFinite()) return std::nullopt;
     auto value = [&](const ScaledSolution& s) {
       return Eigen::Vector2d(s.residual, s.depth - depth);
@@ -103,11 +115,16 @@ class DepthNewton {
   }
 
   ScaledSolution evaluate(Configuration c, const Eigen::Vector2d& x) const {
-    return solver_.assemble(c, std::exp(x[0]), floor_ + std::exp(x[1]), false);
+    const double p = floor_ + std::exp(x[1]);
+    return control_ == DepthControl::Force
+               ? solver_.assemble(c, std::exp(x[0]), p, record_)
+               : solver_.assemble_at_contact(c, p + std::exp(x[0]), p, record_);
   }
 
   const Shooting& solver_;
   double tol_;
+  bool record_;
+  DepthControl control_;
   double floor_ = 1.0;
   Eigen::PartialPivLU<Eigen::Matrix2d> lu_;
   bool have_jacobian_ = false;

@@ -117,6 +117,8 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   // Set when the membrane punctures as it starts sliding although no sliding state at the switch
   // is reached: the depth at which the sliding membrane reaches the criterion.
   std::optional<double> sliding_criterion_depth_mm;
+  // The sliding state at the switch when the jump to sliding fails the membrane.
+  std::optional<ScaledSolution> sliding_at_switch;
   Stage stage = Stage::Slip;
   double slip_from_f = 0.0, slip_from_g = unloaded_excess(criterion);
   if (boundary.first_stage == Stage::Stick) {
@@ -161,6 +163,11 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
         if (slip_from_g >= 0.0) {  // the jump to sliding already fails the membrane
           f_puncture = s.f;
           at_switch = true;
+          // It carries the switch depth, as the curve's point there does (to the curve's
+          // tolerance), however fast the depth runs away from the force.
+          const auto refined =
+              shooting.refine_at_depth(s, boundary.depth_mm / big_a, options.curve_tol, true);
+          sliding_at_switch = refined ? *refined : s;
         }
       }
     }
@@ -185,7 +192,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
         critical_value(criterion));
     return out;
   }
-  auto sol = shooting.solve(stage, *f_puncture);
+  auto sol = sliding_at_switch ? *sliding_at_switch : shooting.solve(stage, *f_puncture);
   // A search that closes on the end of the stage's solutions brackets it to a few ulps and may
   // return the side beyond (no state): the last state is an ulp or two below.
   for (int k = 0; k < 16 && !sol.ok() && failure_kind(sol.status) == FailureKind::Physical; ++k) {

@@ -80,34 +80,35 @@ class IndentationShooting {
     sol.configuration = c;
     sol.evaluations = 1;
     const auto st = contact_.free_start(c, f, p);
-    if (!st) {
-      sol.status = Status::BeyondLocking;
-      sol.message = "the shooting parameter is outside the material's domain";
-      return sol;
+    if (!st) return outside_domain(std::move(sol));
+    if (!run_free_part(*st, record, sol) || !contact_.attach(c, *st, p, record, sol)) return sol;
+    return judged(std::move(sol));
+  }
+
+  // The state of `c` given by the contact model's own pair (q, p), its force an output
+  // (Contact::contact_start: the flat punch's Part III stretch and top stretch with Part II),
+  // integrated once; depth control near a limit load, where the force is ill-suited.
+  ScaledSolution assemble_at_contact(Configuration c, double q, double p, bool record) const {
+    ScaledSolution sol;
+    sol.parameter = p;
+    sol.configuration = c;
+    sol.evaluations = 1;
+    std::optional<FreeStart> st;
+    if constexpr (requires { contact_.contact_start(c, q, p, record, sol); })
+      st = contact_.contact_start(c, q, p, record, sol);
+    if (!st) return outside_domain(std::move(sol));
+    // The contact's parts are set: Part I adds its height and may hold the largest I1.
+    const ScaledSolution contact = sol;
+    if (!run_free_part(*st, record, sol)) return sol;
+    sol.depth += contact.depth;
+    sol.edge_s1 = contact.edge_s1;
+    sol.tension_ratio = contact.tension_ratio;
+    if (contact.max_i1 > sol.max_i1) {
+      sol.max_i1 = contact.max_i1;
+      sol.max_i1_r = contact.max_i1_r;
+      sol.max_i1_radius = contact.max_i1_radius;
     }
-    const auto run = part_one_.run(f, *st, record ? &sol.part_one : nullptr);
-    if (!run.ok) {
-      sol.message = run.turned_back ? "Part I turns back towards the axis before the clamp"
-                                    : "Part I cannot be integrated to the clamp (material locks)";
-      return sol;
-    }
-    sol.residual = run.residual;
-    sol.r_top = st->r0;
-    sol.corner_slope = st->slope;
-    sol.tension_ratio = st->ratio;
-    sol.edge_s1 = membrane_stress(part_one_.law(), st->state[1], st->state[2]).s1;
-    sol.max_i1 = run.max_i1;
-    sol.max_i1_r = run.max_i1_r;
-    sol.max_i1_radius = run.max_i1_radius;
-    sol.depth = run.height;
-    if (!contact_.attach(c, *st, p, record, sol)) return sol;
-    sol.integrated = true;
-    sol.shooting_tol = settings().shooting_tol;
-    sol.status = std::abs(sol.residual) <= settings().shooting_tol ? Status::Converged
-                                                                   : Status::NoConvergence;
-    if (!sol.ok())
-      sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);
-    return sol;
+    return judged(std::move(sol));
   }
 
   // Clamp residual of a configuration's Part I at (f, p); empty outside the material's domain.
@@ -122,7 +123,12 @@ class IndentationShooting {
   // force search is not.  Empty when the states end (or change configuration) before d.
   // `from` becomes the deepest state reached.
   std::optional<ScaledSolution> continue_in_depth(ScaledSolution& from, double d) const {
-    DepthNewton<IndentationShooting> newton(*this, settings().shooting_tol);
+    const DepthControl control = control_of(from.configuration);
+    DepthNewton<IndentationShooting> newton(*this, settings().shooting_tol, false, control);
+    // The unknown beside p: the force, or the contact's own quantity (DepthControl).
+    const auto first = [&](const ScaledSolution& s) {
+      return control == DepthControl::Force ? s.f : s.part_three_stretch;
+    };
     ScaledSolution last = from;
     std::optional<ScaledSolution> before;
     // Steps relative to the depth reached (a local continuation), growing while Newton
@@ -131,12 +137,13 @@ class IndentationShooting {
     int failures = 0;  // failed steps cost the most (integrations beyond the states' end)
     for (int k = 0; k < kMaxDepthSteps && last.depth < d * (1.0 - kDepthMatch); ++k) {
       const double target = std::min(d, last.depth + step);
-      double f = last.f, p = last.parameter;
+      double f = first(last), p = last.parameter;
       if (before && last.depth > before->depth) {
         const double t = (target - last.depth) / (last.depth - before->depth);
-        const double f_next = last.f + t * (last.f - before->f);
+        const double f_next = first(last) + t * (first(last) - first(*before));
         const double p_next = last.parameter + t * (last.parameter - before->parameter);
-        if (f_next > 0.0 && p_next > parameter_floor(last.configuration)) {
+        const bool valid = control == DepthControl::Force ? f_next > 0.0 : f_next > p_next;
+        if (valid && p_next > parameter_floor(last.configuration)) {
           f = f_next;
           p = p_next;
         }
@@ -155,8 +162,33 @@ class IndentationShooting {
       step *= 1.5;
     }
     if (!(std::abs(last.depth - d) <= kDepthMatch * d)) return std::nullopt;
+    if (auto out = refine_at_depth(last, d, settings().shooting_tol, true)) return out;
     ScaledSolution out = assemble(last.configuration, last.f, last.parameter, true);
     if (!out.ok()) return std::nullopt;
+    return out;
+  }
+
+  // Depth control of a configuration: by its contact's own quantity where the contact offers
+  // one (DepthControl), else by the force.
+  DepthControl control_of(Configuration c) const {
+    if constexpr (requires { contact_.contact_controls(c); })
+      if (contact_.contact_controls(c)) return DepthControl::Contact;
+    return DepthControl::Force;
+  }
+
+  // The state at normalised depth d from the state `s` near it, by Newton in depth control to
+  // `tol` (clamp residual and relative depth), sampled with `record`; empty if Newton fails.
+  // A force search leaves a state within its force's noise of the depth, which near a limit
+  // load (the depth running away from the force) is up to ~1e-6 of it.
+  std::optional<ScaledSolution> refine_at_depth(const ScaledSolution& s, double d, double tol,
+                                                bool record) const {
+    const DepthControl control = control_of(s.configuration);
+    DepthNewton<IndentationShooting> newton(*this, tol, record, control);
+    auto out = newton.solve(s.configuration,
+                            d,
+                            control == DepthControl::Force ? s.f : s.part_three_stretch,
+                            s.parameter);
+    if (out) out->evaluations += s.evaluations;
     return out;
   }
   static constexpr int kMaxDepthSteps = 100;
@@ -166,6 +198,8 @@ class IndentationShooting {
 
   // A depth within this relative distance of the requested one is a root of the depth search.
   static constexpr double kDepthMatch = 1e-5;
+  // ... and one further away than this is brought to it in depth control (refine_at_depth).
+  static constexpr double kDepthPolish = 1e-9;
 
   // The equilibrium at normalised depth d in `stage`: the force bracketed from zero (a search
   // over solve(); the loading curve uses the faster DepthNewton and falls back on this).
@@ -176,31 +210,49 @@ class IndentationShooting {
     auto keep_if_deepest = [&](const ScaledSolution& sol) {
       if (sol.ok() && sol.depth < d && (!deepest || sol.depth > deepest->depth)) deepest = sol;
     };
-    auto residual = [&](double f) -> std::optional<double> {
-      auto sol = solve(stage, f);
-      if (!sol.ok()) {
-        last_failure = std::move(sol);
-        return std::nullopt;
+    // Past a limit load, with a state short of d in a configuration the contact controls, the
+    // force search hands over to depth control from that state: it would bisect towards the
+    // limit load, each solve longer than the last, while the depth runs away from the force
+    // (1e-9 of it moves the depth by 1e-1); its remaining calls are skipped.  Should depth
+    // control end short of d, the force search runs again in full for the deepest state.
+    for (const bool may_hand_over : {true, false}) {
+      bool handed_over = false;
+      auto residual = [&](double f) -> std::optional<double> {
+        if (handed_over) return std::nullopt;
+        auto sol = solve(stage, f);
+        if (!sol.ok()) {
+          handed_over = may_hand_over && sol.status == Status::LimitLoad && deepest &&
+                        control_of(deepest->configuration) == DepthControl::Contact;
+          last_failure = std::move(sol);
+          return std::nullopt;
+        }
+        keep_if_deepest(sol);
+        return sol.depth - d;
+      };
+      const double step = f_guess > 0.0 ? 0.5 * f_guess : 0.1;
+      const auto f = shoot_increasing(residual,
+                                      0.0,
+                                      -d,
+                                      std::numeric_limits<double>::infinity(),
+                                      settings().max_iterations,
+                                      step);
+      // The bracket closes either on a root or, when the depth lies beyond every equilibrium of
+      // the stage, on the largest force the stage carries (where the residual jumps from the
+      // deepest state's to the failure's stand-in).  At a root the depth matches to the
+      // shooting's noise (up to ~2e-6 relative at micrometre depths, where the depth goes as
+      // the cube root of the force; more near a limit load): then it is brought to d.
+      if (f && !handed_over) {
+        ScaledSolution sol = solve(stage, *f);
+        if (sol.ok() && std::abs(sol.depth - d) <= kDepthMatch * d) {
+          if (std::abs(sol.depth - d) <= kDepthPolish * d) return sol;
+          auto refined = refine_at_depth(sol, d, settings().shooting_tol, true);
+          return refined ? *refined : sol;
+        }
+        keep_if_deepest(sol);
       }
-      keep_if_deepest(sol);
-      return sol.depth - d;
-    };
-    const double step = f_guess > 0.0 ? 0.5 * f_guess : 0.1;
-    const auto f = shoot_increasing(residual,
-                                    0.0,
-                                    -d,
-                                    std::numeric_limits<double>::infinity(),
-                                    settings().max_iterations,
-                                    step);
-    // The bracket closes either on a root or, when the depth lies beyond every equilibrium of
-    // the stage, on the largest force the stage carries (where the residual jumps from the
-    // deepest state's to the failure's stand-in).  At a root the depth matches to the
-    // shooting's noise (up to ~2e-6 relative at micrometre depths, where the depth goes as the
-    // cube root of the force); at the end of the solutions it falls short by the unreachable rest.
-    if (f) {
-      ScaledSolution sol = solve(stage, *f);
-      if (sol.ok() && std::abs(sol.depth - d) <= kDepthMatch * d) return sol;
-      keep_if_deepest(sol);
+      if (!handed_over) break;
+      ScaledSolution from = *deepest;
+      if (auto reached = continue_in_depth(from, d)) return *reached;
     }
     // Near a limit load the depth grows much faster than the force, so the force search may
     // stop short of the depth although states exist beyond: follow them in depth control.
@@ -231,6 +283,44 @@ class IndentationShooting {
   }
 
  private:
+  static ScaledSolution outside_domain(ScaledSolution sol) {
+    sol.status = Status::BeyondLocking;
+    sol.message = "the shooting parameter is outside the material's domain";
+    return sol;
+  }
+
+  // Part I from `st` at force sol.f into sol: clamp residual, height, largest I1; false (with
+  // the message) when it cannot be integrated to the clamp.
+  bool run_free_part(const FreeStart& st, bool record, ScaledSolution& sol) const {
+    const auto run = part_one_.run(sol.f, st, record ? &sol.part_one : nullptr);
+    if (!run.ok) {
+      sol.message = run.turned_back ? "Part I turns back towards the axis before the clamp"
+                                    : "Part I cannot be integrated to the clamp (material locks)";
+      return false;
+    }
+    sol.residual = run.residual;
+    sol.r_top = st.r0;
+    sol.corner_slope = st.slope;
+    sol.tension_ratio = st.ratio;
+    sol.edge_s1 = membrane_stress(part_one_.law(), st.state[1], st.state[2]).s1;
+    sol.max_i1 = run.max_i1;
+    sol.max_i1_r = run.max_i1_r;
+    sol.max_i1_radius = run.max_i1_radius;
+    sol.depth = run.height;
+    return true;
+  }
+
+  // An integrated state judged by its clamp residual.
+  ScaledSolution judged(ScaledSolution sol) const {
+    sol.integrated = true;
+    sol.shooting_tol = settings().shooting_tol;
+    sol.status = std::abs(sol.residual) <= settings().shooting_tol ? Status::Converged
+                                                                   : Status::NoConvergence;
+    if (!sol.ok())
+      sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);
+    return sol;
+  }
+
   FreePart<Law> part_one_;
   Contact contact_;
   bool record_unloaded_;

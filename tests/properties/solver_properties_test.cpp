@@ -332,8 +332,10 @@ RC_GTEST_PROP(SolverProperties, LoadingCurveIsFiniteAndRisesWithinEachStage, ())
       RC_ASSERT(i1 >= p.critical_i1 * (1.0 - 1e-6));
     else
       RC_ASSERT(std::abs(i1 - p.critical_i1) <= 1e-6 * p.critical_i1);
+    // Both are converged to 1e-9 relative in depth (SolverOptions::curve_tol), the curve's
+    // point to its grid depth, the puncture state at the switch to the switch depth.
     RC_ASSERT(std::abs(c.points.back().depth_mm - c.puncture.depth_mm) <=
-              1e-9 * c.puncture.depth_mm);
+              2e-9 * c.puncture.depth_mm);
   }
 }
 

@@ -68,10 +68,12 @@ TEST(UnreachableDepth, DepthControlFollowsTheStatesNearALimitLoad) {
   EXPECT_NEAR(again.max_first_invariant, p.critical_i1, 1e-3);
 }
 
-// Held until 2.9946 N, this membrane switches at a depth the sliding membrane cannot reach below
-// its limit load; sliding, it reaches the critical I1 already at a smaller depth, so it punctures
-// as it starts sliding: at the held state's force and depth.
-TEST(UnreachableDepth, PuncturesAsItStartsSlidingPastALimitLoad) {
+// Held until 2.9946 N, this membrane switches at a depth the sliding membrane reaches only just
+// below its limit load (the force search alone cannot resolve that depth and took it for
+// unreachable; depth control by the Part III stretch reaches it: limit_load_test.cpp).  Sliding,
+// it reaches the critical I1 already at a smaller depth, so it punctures on sliding at the
+// switch: the sliding state at the switch depth, past the criterion.
+TEST(UnreachableDepth, PuncturesOnSlidingAtTheSwitchNearALimitLoad) {
   Problem p = paper_problem(NeoHookean{}, 0.0);
   p.indenter = FlatPunch{4.86};
   p.geometry.thickness_mm = 0.02936;
@@ -87,14 +89,19 @@ TEST(UnreachableDepth, PuncturesAsItStartsSlidingPastALimitLoad) {
   const PuncturePrediction at = predict_puncture(p);
   ASSERT_TRUE(at.ok()) << at.message;
   EXPECT_TRUE(at.at_switch);
-  EXPECT_EQ(at.stage, Stage::Stick);
-  EXPECT_NEAR(at.force_n / 2.9946, 1.0, 1e-9);
-  EXPECT_NEAR(at.depth_mm / b.depth_mm, 1.0, 1e-9);
+  EXPECT_EQ(at.stage, Stage::Slip);
+  EXPECT_NEAR(at.depth_mm / b.depth_mm, 1.0, 2e-9);
+  EXPECT_GT(at.state.max_first_invariant, p.critical_i1);
+  // Below the neo-Hookean frictionless limit load f = a / A, within 1e-3 of it.
+  const double f_limit = 4.86 / p.geometry.clamp_radius_mm;
+  EXPECT_LT(at.normalized_force, f_limit);
+  EXPECT_GT(at.normalized_force, (1.0 - 1e-3) * f_limit);
   const LoadingCurve c = loading_curve(p, {.points = 8});
   ASSERT_TRUE(c.ok()) << c.message;
   EXPECT_NEAR(c.points.back().depth_mm / b.depth_mm, 1.0, 1e-12);
-  EXPECT_EQ(c.points.back().stage, Stage::Stick);
-  for (const auto& q : c.points) EXPECT_FALSE(q.beyond_puncture) << q.depth_mm;
+  EXPECT_EQ(c.points.back().stage, Stage::Slip);
+  for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
+    EXPECT_FALSE(c.points[i].beyond_puncture) << c.points[i].depth_mm;
 }
 
 TEST(UnreachableForce, GentBeyondLockingIsPhysical) {

@@ -15,6 +15,13 @@
 //                                            the parts in contact, after Part I was integrated:
 //                                            their stretches, height and largest I1; false (with
 //                                            status and message set) when they cannot be solved
+//   optional, for depth control near a limit load (depth_newton.hpp); without them depth control
+//   works on (f, p) alone:
+//   bool contact_controls(Configuration)     whether contact_start gives that configuration
+//   std::optional<FreeStart> contact_start(Configuration, q, p, record, ScaledSolution&)
+//                                            the configuration given by a contact quantity q
+//                                            and p, the force an output (set in the solution
+//                                            with the parts in contact)
 //   ShootingPlan plan(Stage, f, counted_residual)
 //                                            which configuration the stage is in at force f and
 //                                            the bracket of its parameter

@@ -11,6 +11,9 @@
 //   SlipWithPartTwo     lambda2 where Part I leaves the indenter's side (> a / A; it can be
 //                       below 1 when material from beyond the indenter's radius climbs its side)
 // Both slip parameters equal the same stretch where Part II appears, so p is continuous there.
+// In depth control SlipWithPartTwo can also be given by (Part III stretch, p), the force then an
+// output (contact_start): near a limit load the depth runs away from the force but not from the
+// Part III stretch.
 #include <fmt/format.h>
 
 #include <boost/math/constants/constants.hpp>
@@ -20,6 +23,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
@@ -230,27 +234,55 @@ class FlatPunchContact {
     }
     const PartTwoState corner = *corner_state;
     if (record) sol.part_two.push_back({r_corner, corner[0], corner[1]});
-    // I1 along Part II: at the accepted steps and at the corner.
-    auto track = [&](double r, double i1) {  // on the side: current radius a
-      if (i1 > sol.max_i1) {
-        sol.max_i1 = i1;
-        sol.max_i1_r = r;
-        sol.max_i1_radius = s_.a;
-      }
-    };
-    track(r_corner, first_invariant(corner[0], s_.a / r_corner));
-    const auto side_peak = refined_maximum(side_max, side, [&](double r, const PartTwoState& y) {
-      return first_invariant(y[0], s_.a / r);
-    });
-    track(side_peak.r, side_peak.value);
-    sol.r_corner = r_corner;
-    sol.part_three_stretch = s_.a / r_corner;
-    sol.part_two_length = corner[1];
+    finish_part_two(side, side_max, r_corner, corner, sol);
     sol.depth += corner[1];
-    const double l3 = sol.part_three_stretch;
-    sol.edge_s1 = membrane_stress(law_, corner[0], l3).s1;
-    sol.tension_ratio = sol.edge_s1 / membrane_stress(law_, l3, l3).s1;
     return true;
+  }
+
+  // SlipWithPartTwo given by its Part III stretch l3 and the hoop stretch p at its top (depth
+  // control): Part II marched up the side from the corner, where the capstan condition gives
+  // lambda1 (Eq. 22), to the top at R = a / p, where Part I leaves vertically with R s1 = f.
+  // Sets the force, Part II and the corner in `sol` (its depth: Part II's length; Part I's
+  // height is added by the shooting); the start of Part I, or empty where l3 > p > a / A
+  // does not hold or Part II cannot be integrated (locking).
+  bool contact_controls(Configuration c) const { return c == Configuration::SlipWithPartTwo; }
+
+  std::optional<FreeStart> contact_start(Configuration c, double l3, double p, bool record,
+                                         ScaledSolution& sol) const {
+    if (c != Configuration::SlipWithPartTwo || !(p > s_.a) || !(l3 > p) || !std::isfinite(l3) ||
+        !(first_invariant(l3, l3) < locking_i1_))
+      return std::nullopt;
+    const double capstan = std::exp(s_.mu * kHalfPi);
+    const auto l1_corner =
+        invert_radial_stress(law_, capstan * membrane_stress(law_, l3, l3).s1, l3);
+    if (!l1_corner) return std::nullopt;
+    const double r_corner = s_.a / l3, r_top = s_.a / p;
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
+    IntegrationSettings integration = part_one_.settings().integration;
+    if (record) integration.max_step = r_top / std::max(1, part_one_.settings().field_points);
+    // y runs from 0 at the corner to minus Part II's length at the top (it grows downward).
+    PartTwoState y{*l1_corner, 0.0};
+    InteriorMaximum<PartTwoState> side_max;
+    std::vector<PartTwoSample> upward;
+    if (!integrate_part(
+            side, y, r_corner, r_top, integration, [&](double r, const PartTwoState& x) {
+              if (record) upward.push_back({r, x[0], x[1]});
+              side_max.observe(r, x, first_invariant(x[0], s_.a / r));
+              return true;
+            }))
+      return std::nullopt;
+    const double length = -y[1];
+    const double f = r_top * membrane_stress(law_, y[0], p).s1;
+    if (!(f > 0.0) || !std::isfinite(f)) return std::nullopt;
+    sol.f = f;
+    sol.max_i1 = 3.0;
+    sol.part_two.clear();
+    // Samples as attach takes them: from the top down, y measured down from the top.
+    for (auto it = upward.rbegin(); it != upward.rend(); ++it)
+      sol.part_two.push_back({(*it)[0], (*it)[1], (*it)[2] + length});
+    finish_part_two(side, side_max, r_corner, {*l1_corner, length}, sol);
+    sol.depth = length;
+    return FreeStart{{0.0, y[0], p, 0.0}, r_top, kHalfPi, capstan};
   }
 
   // The stick stage holds the membrane at the edge; the slip stage finds whether Part II exists.
@@ -564,6 +596,16 @@ class FlatPunchContact {
       plan.message = "the force needs a stretch under the tip beyond the material's locking limit";
       return plan;
     }
+    if (std::isinf(*onset) && s_.mu == 0.0 && s_.equation == PartTwoEquation::RingBalance) {
+      // Without friction R s1 = f all down the side, so the corner, where s1 = s_eq(L) at
+      // L = a / R, needs s_eq(L) / L = f / a: out of reach at every L.  (Marching down the side
+      // to find that out takes 100 times a solve.)
+      plan.status = Status::LimitLoad;
+      plan.message =
+          "the force is beyond the membrane's limit load (without friction the corner needs "
+          "s_eq(L) / L = f / a under the tip, which this law never reaches)";
+      return plan;
+    }
     const double g_onset = part_two_indicator(f).value_or(kBeyondDomain);
     if (g_onset < 0.0) {
       // Part I reaches the clamp with lambda2 < 1 even when it leaves the corner vertically, so
@@ -598,6 +640,30 @@ class FlatPunchContact {
         fmt::format("slip shooting ({}) found no parameter meeting the clamp condition",
                     to_string(plan.configuration));
     return plan;
+  }
+
+  // The corner and the largest I1 of Part II (corner: lambda1 and Part II's length there).
+  void finish_part_two(const PartTwoSystem<Law>& side,
+                       const InteriorMaximum<PartTwoState>& side_max, double r_corner,
+                       const PartTwoState& corner, ScaledSolution& sol) const {
+    auto track = [&](double r, double i1) {  // on the side: current radius a
+      if (i1 > sol.max_i1) {
+        sol.max_i1 = i1;
+        sol.max_i1_r = r;
+        sol.max_i1_radius = s_.a;
+      }
+    };
+    track(r_corner, first_invariant(corner[0], s_.a / r_corner));
+    const auto side_peak = refined_maximum(side_max, side, [&](double r, const PartTwoState& y) {
+      return first_invariant(y[0], s_.a / r);
+    });
+    track(side_peak.r, side_peak.value);
+    sol.r_corner = r_corner;
+    sol.part_three_stretch = s_.a / r_corner;
+    sol.part_two_length = corner[1];
+    const double l3 = sol.part_three_stretch;
+    sol.edge_s1 = membrane_stress(law_, corner[0], l3).s1;
+    sol.tension_ratio = sol.edge_s1 / membrane_stress(law_, l3, l3).s1;
   }
 
   const FreePart<Law>& part_one_;
