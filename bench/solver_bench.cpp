@@ -8,6 +8,7 @@
 //   BM_LoadingCurveStick.. the same with a stick stage: held until 0.3 N (the switch is one
 //                          solve at that force), or until the edge tension reaches 0.02 N/mm
 //                          (the switch is a root search over the force)
+//   BM_LoadingCurveNearLimitLoad  12 points of a membrane sliding just below its limit load
 //   BM_FiniteElements...   the second method (finite_element.hpp), 128 quadratic elements:
 //                          held at 20 mm (a plain minimisation, continuation from flat) and
 //                          frictionless at 20 mm (side wrapped: the departure is searched)
@@ -83,6 +84,27 @@ void BM_LoadingCurveStickEdgeTension(benchmark::State& state) {
   loading_curve_benchmark(state, {StickRule::EdgeTension, 0.02});
 }
 BENCHMARK(BM_LoadingCurveStickEdgeTension)->Unit(benchmark::kMillisecond);
+
+// The robustness issue's slow case: a thin neo-Hookean membrane held to 2.9946 N that slides
+// frictionless into Part II 1.4e-4 below its limit load, 12 points (depth control by the Part III
+// stretch there).
+void BM_LoadingCurveNearLimitLoad(benchmark::State& state) {
+  Problem problem;
+  problem.indenter = FlatPunch{4.86};
+  problem.geometry.thickness_mm = 0.02936;
+  problem.material.law = NeoHookean{};
+  problem.material.shear_modulus_mpa = 0.6708;
+  problem.friction = 0.0;
+  problem.critical_i1 = 118.0;
+  problem.stick = {StickRule::Force, 2.9946};
+  CurveOptions curve;
+  curve.points = 12;
+  for (auto _ : state) {
+    const auto result = loading_curve(problem, curve);
+    if (!result.ok()) state.SkipWithError(result.message.c_str());
+  }
+}
+BENCHMARK(BM_LoadingCurveNearLimitLoad)->Unit(benchmark::kMillisecond);
 
 void BM_FiniteElementsHeld(benchmark::State& state) {
   Problem problem;
