@@ -53,12 +53,16 @@ class IndentationShooting {
       sol.message = plan.message;
       return sol;
     }
-    const auto root = shoot_increasing([&](double p) { return counted(plan.configuration, p); },
-                                       plan.lo,
-                                       plan.g_lo,
-                                       plan.cap,
-                                       settings().max_iterations,
-                                       plan.initial_step);
+    auto root = shoot_increasing([&](double p) { return counted(plan.configuration, p); },
+                                 plan.lo,
+                                 plan.g_lo,
+                                 plan.cap,
+                                 settings().max_iterations,
+                                 plan.initial_step);
+    // The bracket's low end may meet the clamp condition already: the held membrane within
+    // ~1e-14 of its branch's end (leaving the edge vertically), where the root t ~ 1e-18 lies
+    // so close to 0 that a tolerance relative to it takes TOMS 748 past its iteration limit.
+    if (!root && std::abs(plan.g_lo) <= settings().shooting_tol) root = plan.lo;
     if (!root) {
       sol.message = plan.no_root_message;
       sol.evaluations = evals;
@@ -67,6 +71,7 @@ class IndentationShooting {
     sol = assemble(plan.configuration, f, *root, true);
     sol.evaluations += evals;
     accept_collapsed_bracket(sol);
+    if (!sol.ok() && sol.integrated) secant_on_sampled(sol);
     return sol;
   }
 
@@ -308,6 +313,24 @@ class IndentationShooting {
     sol.max_i1_radius = run.max_i1_radius;
     sol.depth = run.height;
     return true;
+  }
+
+  // The sampled integration (steps no longer than the samples' spacing) is not the one the
+  // shooting used; where the clamp residual is very steep in the parameter (dg/dp ~ 1e5, a
+  // Part II top stretch well below 1) their difference alone exceeds the tolerance (1e-8 where
+  // the shooting's root has 3e-12): a few secant steps on the sampled residual itself.
+  void secant_on_sampled(ScaledSolution& sol) const {
+    ScaledSolution before = assemble(sol.configuration, sol.f, sol.parameter * (1.0 + 1e-12), true);
+    for (int k = 0; k < 4 && before.integrated && !sol.ok(); ++k) {
+      const double slope = (sol.residual - before.residual) / (sol.parameter - before.parameter);
+      const double p = sol.parameter - sol.residual / slope;
+      if (!std::isfinite(p) || !(p > parameter_floor(sol.configuration))) return;
+      ScaledSolution next = assemble(sol.configuration, sol.f, p, true);
+      if (!next.integrated) return;
+      next.evaluations += sol.evaluations + before.evaluations;
+      before = std::move(sol);
+      sol = std::move(next);
+    }
   }
 
   // An integrated state judged by its clamp residual.
