@@ -320,17 +320,19 @@ class IndentationShooting {
   // Part II top stretch well below 1) their difference alone exceeds the tolerance (1e-8 where
   // the shooting's root has 3e-12): a few secant steps on the sampled residual itself.
   void secant_on_sampled(ScaledSolution& sol) const {
+    int evaluations = sol.evaluations + 1;
     ScaledSolution before = assemble(sol.configuration, sol.f, sol.parameter * (1.0 + 1e-12), true);
     for (int k = 0; k < 4 && before.integrated && !sol.ok(); ++k) {
       const double slope = (sol.residual - before.residual) / (sol.parameter - before.parameter);
       const double p = sol.parameter - sol.residual / slope;
-      if (!std::isfinite(p) || !(p > parameter_floor(sol.configuration))) return;
+      if (!std::isfinite(p) || !(p > parameter_floor(sol.configuration))) break;
       ScaledSolution next = assemble(sol.configuration, sol.f, p, true);
-      if (!next.integrated) return;
-      next.evaluations += sol.evaluations + before.evaluations;
+      ++evaluations;
+      if (!next.integrated) break;
       before = std::move(sol);
       sol = std::move(next);
     }
+    sol.evaluations = evaluations;
   }
 
   // An integrated state judged by its clamp residual.
