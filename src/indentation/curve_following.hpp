@@ -124,7 +124,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     last_configuration = sol->configuration;
     last_contact_q.reset();
     if (shooting.control_of(sol->configuration) == DepthControl::Contact)
-      last_contact_q = sol->part_three_stretch;
+      last_contact_q = depth_unknown(DepthControl::Contact, *sol);
     CurvePoint pt;
     pt.depth_mm = depth;
     pt.force_n = sol->f * scale;

@@ -22,6 +22,11 @@ namespace puncture::detail {
 // away from the force (~1e-9 of it moves the depth by 1e-1) but not from q.
 enum class DepthControl { Force, Contact };
 
+// A state's unknown beside p under `control`: its force or its Part III stretch.
+inline double depth_unknown(DepthControl control, const ScaledSolution& s) {
+  return control == DepthControl::Force ? s.f : s.part_three_stretch;
+}
+
 // Shooting: an IndentationShooting (its assemble(), assemble_at_contact() and parameter_floor()).
 template <class Shooting>
 class DepthNewton {

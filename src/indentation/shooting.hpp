@@ -103,15 +103,16 @@ class IndentationShooting {
       st = contact_.contact_start(c, q, p, record, sol);
     if (!st) return outside_domain(std::move(sol));
     // The contact's parts are set: Part I adds its height and may hold the largest I1.
-    const ScaledSolution contact = sol;
+    const double contact_depth = sol.depth, edge_s1 = sol.edge_s1, ratio = sol.tension_ratio;
+    const double i1 = sol.max_i1, i1_r = sol.max_i1_r, i1_radius = sol.max_i1_radius;
     if (!run_free_part(*st, record, sol)) return sol;
-    sol.depth += contact.depth;
-    sol.edge_s1 = contact.edge_s1;
-    sol.tension_ratio = contact.tension_ratio;
-    if (contact.max_i1 > sol.max_i1) {
-      sol.max_i1 = contact.max_i1;
-      sol.max_i1_r = contact.max_i1_r;
-      sol.max_i1_radius = contact.max_i1_radius;
+    sol.depth += contact_depth;
+    sol.edge_s1 = edge_s1;
+    sol.tension_ratio = ratio;
+    if (i1 > sol.max_i1) {
+      sol.max_i1 = i1;
+      sol.max_i1_r = i1_r;
+      sol.max_i1_radius = i1_radius;
     }
     return judged(std::move(sol));
   }
@@ -130,10 +131,7 @@ class IndentationShooting {
   std::optional<ScaledSolution> continue_in_depth(ScaledSolution& from, double d) const {
     const DepthControl control = control_of(from.configuration);
     DepthNewton<IndentationShooting> newton(*this, settings().shooting_tol, false, control);
-    // The unknown beside p: the force, or the contact's own quantity (DepthControl).
-    const auto first = [&](const ScaledSolution& s) {
-      return control == DepthControl::Force ? s.f : s.part_three_stretch;
-    };
+    const auto first = [&](const ScaledSolution& s) { return depth_unknown(control, s); };
     ScaledSolution last = from;
     std::optional<ScaledSolution> before;
     // Steps relative to the depth reached (a local continuation), growing while Newton
@@ -189,10 +187,7 @@ class IndentationShooting {
                                                 bool record) const {
     const DepthControl control = control_of(s.configuration);
     DepthNewton<IndentationShooting> newton(*this, tol, record, control);
-    auto out = newton.solve(s.configuration,
-                            d,
-                            control == DepthControl::Force ? s.f : s.part_three_stretch,
-                            s.parameter);
+    auto out = newton.solve(s.configuration, d, depth_unknown(control, s), s.parameter);
     if (out) out->evaluations += s.evaluations;
     return out;
   }

@@ -239,14 +239,15 @@ class FlatPunchContact {
     return true;
   }
 
+  // Depth control by the Part III stretch (contact_start) is offered with Part II.
+  bool contact_controls(Configuration c) const { return c == Configuration::SlipWithPartTwo; }
+
   // SlipWithPartTwo given by its Part III stretch l3 and the hoop stretch p at its top (depth
   // control): Part II marched up the side from the corner, where the capstan condition gives
   // lambda1 (Eq. 22), to the top at R = a / p, where Part I leaves vertically with R s1 = f.
   // Sets the force, Part II and the corner in `sol` (its depth: Part II's length; Part I's
   // height is added by the shooting); the start of Part I, or empty where l3 > p > a / A
   // does not hold or Part II cannot be integrated (locking).
-  bool contact_controls(Configuration c) const { return c == Configuration::SlipWithPartTwo; }
-
   std::optional<FreeStart> contact_start(Configuration c, double l3, double p, bool record,
                                          ScaledSolution& sol) const {
     if (c != Configuration::SlipWithPartTwo || !(p > s_.a) || !(l3 > p) || !std::isfinite(l3) ||
