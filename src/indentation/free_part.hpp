@@ -11,6 +11,7 @@
 
 #include "indentation/scaled_solution.hpp"
 #include "mechanics/free_membrane_ode.hpp"
+#include "numerics/even_samples.hpp"
 #include "numerics/interior_maximum.hpp"
 
 namespace puncture::detail {
@@ -55,23 +56,27 @@ class FreePart {
     const double r0 = start.r0;
     if (samples) samples->clear();
     const FreeMembraneSystem<Law, Stretches> system{law_, TransverseLoad{f, 0.0}, locking_i1_};
-    IntegrationSettings integration = s_.integration;
-    if (samples) integration.max_step = (1.0 - r0) / std::max(1, s_.field_points);
     double last_l2 = x[2];
     InteriorMaximum<PartOneState> i1_max;
-    run.ok = integrate_part(system, x, r0, 1.0, integration, [&](double r, const PartOneState& y) {
-      i1_max.observe(r, y, first_invariant(y[1], y[2]));
-      if (samples) samples->push_back({r, y[0], y[1], y[2], y[3]});
-      last_l2 = y[2];
-      if (y[0] < 0.0) {  // meridian turned back towards the axis: hoop stretch too small
-        run.turned_back = true;
-        return false;
-      }
-      return true;
-    });
+    Knots<PartOneState> knots;
+    run.ok =
+        integrate_part(system, x, r0, 1.0, s_.integration, [&](double r, const PartOneState& y) {
+          i1_max.observe(r, y, first_invariant(y[1], y[2]));
+          if (samples) knots.add(r, y);
+          last_l2 = y[2];
+          if (y[0] < 0.0) {  // meridian turned back towards the axis: hoop stretch too small
+            run.turned_back = true;
+            return false;
+          }
+          return true;
+        });
     // A Part I that fails (locks) on its way with the hoop stretch already below 1 has collapsed
     // towards the axis: it belongs to the negative side of the clamp residual as well.
     if (!run.ok && last_l2 < 1.0) run.turned_back = true;
+    if (samples)
+      for (const auto& [r, y] :
+           even_samples(system, knots, std::max(1, s_.field_points), s_.integration))
+        samples->push_back({r, y[0], y[1], y[2], y[3]});
     if (run.ok) {
       const auto found = refined_maximum(i1_max, system, [](double, const PartOneState& y) {
         return first_invariant(y[1], y[2]);

@@ -1,7 +1,7 @@
 #pragma once
 // The largest I1 along an integrated part, to the integration's accuracy rather than the step
-// spacing: the observer keeps the samples around the largest one, and when that sample is
-// interior a Brent search over the two adjacent steps (each re-taken as one Runge-Kutta step from
+// spacing: the observer keeps the samples around the largest one, and a Brent search over the
+// steps beside it (each re-taken as one Runge-Kutta step from
 // its accepted start) finds the maximum between samples.
 #include <boost/math/tools/minima.hpp>
 #include <limits>
@@ -44,7 +44,6 @@ class InteriorMaximum {
   template <class Step, class Value>
   Maximum refine(Step&& step, Value&& value) const {
     Maximum best{best_value_, best_r_, best_state_};
-    if (!has_before_ || !has_after_) return best;  // the maximum sits at an end of the part
     auto search = [&](double r0, const State& x0, double r1) {
       const auto [lo, hi] = std::minmax(r0, r1);
       std::uintmax_t iterations = 60;
@@ -53,8 +52,10 @@ class InteriorMaximum {
       if (-found.second > best.value)
         best = {-found.second, found.first, step(r0, x0, found.first)};
     };
-    search(before_r_, before_state_, best_r_);
-    search(best_r_, best_state_, after_r_);
+    // The largest sample at an end of the part still leaves the step beside it to search: the
+    // maximum may lie inside it, above both of its ends.
+    if (has_before_) search(before_r_, before_state_, best_r_);
+    if (has_after_) search(best_r_, best_state_, after_r_);
     return best;
   }
 

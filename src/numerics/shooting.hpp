@@ -19,13 +19,31 @@ double residual_or_beyond(Residual& g, double p) {
   return r ? *r : kBeyondDomain;
 }
 
+// How a shooting ends besides a bracket closed to a few ulps.
+struct ShootingEnd {
+  double good_enough = 0.0;     // a parameter whose |g| is at most this is taken as the root
+  std::optional<double> g_cap;  // g at a finite cap, when the caller knows it already
+};
+
 // Root in (lo, cap) of g, increasing, with g(lo) = g_lo < 0.  Empty if no sign change is found.
 // Without a finite cap the bracket grows from lo by initial_step, doubling.
 template <class Residual>
-std::optional<double> shoot_increasing(Residual&& g, double lo, double g_lo, double cap,
-                                       int max_iterations, double initial_step = 0.0) {
+std::optional<double> shoot_increasing(Residual&& g_in, double lo, double g_lo, double cap,
+                                       int max_iterations, double initial_step = 0.0,
+                                       const ShootingEnd& end = {}) {
+  // A residual within `good_enough` counts as zero: TOMS 748 stops at an exact zero at once,
+  // where it would otherwise take one or two more evaluations to close the bracket to ulps.
+  auto g = [&](double p) -> std::optional<double> {
+    const std::optional<double> r = g_in(p);
+    if (r && std::abs(*r) <= end.good_enough) return 0.0;
+    return r;
+  };
   double hi = lo, g_hi = g_lo;
   const bool bounded = std::isfinite(cap);
+  if (bounded && end.g_cap && *end.g_cap >= 0.0) {  // the whole bracket is known
+    hi = cap;
+    g_hi = std::abs(*end.g_cap) <= end.good_enough ? 0.0 : *end.g_cap;
+  }
   double step = initial_step > 0.0 ? initial_step : 0.05 * std::max(lo, 1e-3);
   for (int k = 1; k <= 60 && g_hi < 0.0; ++k) {
     lo = hi;

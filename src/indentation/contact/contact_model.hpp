@@ -72,6 +72,7 @@ struct ShootingPlan {
   double lo = 0.0;
   double g_lo = 0.0;
   double cap = std::numeric_limits<double>::infinity();
+  std::optional<double> g_cap;  // the residual at the cap, when the plan has evaluated it
   double initial_step = 0.0;    // without a cap: the bracket's first step (0: 5% of lo)
   std::string no_root_message;  // what to say when the bracketing finds no root
   bool ok() const { return status == Status::Converged; }

@@ -16,6 +16,7 @@
 // Part III stretch.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
@@ -30,6 +31,7 @@
 #include "indentation/free_part.hpp"
 #include "indentation/membrane_fields.hpp"
 #include "mechanics/inverse_stretch.hpp"
+#include "numerics/even_samples.hpp"
 #include "numerics/interior_maximum.hpp"
 #include "numerics/shooting.hpp"
 
@@ -157,14 +159,13 @@ class FlatPunchContact {
     PartTwoState y_prev = y;
     InteriorMaximum<PartTwoState> side_max;
     const double r_floor = s_.a / locking_radial_stretch(law_, 1.0);
-    IntegrationSettings integration = part_one_.settings().integration;
-    if (record) integration.max_step = st.r0 / std::max(1, part_one_.settings().field_points);
+    Knots<PartTwoState> knots;
     const bool ok =
         integrate_part(side,
                        y,
                        st.r0,
                        std::isfinite(r_floor) ? r_floor : 1e-6 * s_.a,
-                       integration,
+                       part_one_.settings().integration,
                        [&](double r, const PartTwoState& state) {
                          if (corner_gap(r, state) <= 0.0) {
                            r_hit = r;
@@ -172,7 +173,7 @@ class FlatPunchContact {
                          }
                          r_prev = r;
                          y_prev = state;
-                         if (record) sol.part_two.push_back({r, state[0], state[1]});
+                         if (record) knots.add(r, state);
                          side_max.observe(r, state, first_invariant(state[0], s_.a / r));
                          return true;
                        });
@@ -233,7 +234,15 @@ class FlatPunchContact {
       }
     }
     const PartTwoState corner = *corner_state;
-    if (record) sol.part_two.push_back({r_corner, corner[0], corner[1]});
+    // The last step, down to the corner, may hold the side's largest I1.
+    side_max.observe(r_corner, corner, first_invariant(corner[0], s_.a / r_corner));
+    if (record) {
+      knots.add(r_corner, corner);
+      sol.part_two.clear();
+      for (const auto& [r, y] :
+           even_samples(side, knots, field_intervals(), part_one_.settings().integration))
+        sol.part_two.push_back({r, y[0], y[1]});
+    }
     finish_part_two(side, side_max, r_corner, corner, sol);
     sol.depth += corner[1];
     return true;
@@ -259,18 +268,20 @@ class FlatPunchContact {
     if (!l1_corner) return std::nullopt;
     const double r_corner = s_.a / l3, r_top = s_.a / p;
     const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
-    IntegrationSettings integration = part_one_.settings().integration;
-    if (record) integration.max_step = r_top / std::max(1, part_one_.settings().field_points);
     // y runs from 0 at the corner to minus Part II's length at the top (it grows downward).
     PartTwoState y{*l1_corner, 0.0};
     InteriorMaximum<PartTwoState> side_max;
-    std::vector<PartTwoSample> upward;
-    if (!integrate_part(
-            side, y, r_corner, r_top, integration, [&](double r, const PartTwoState& x) {
-              if (record) upward.push_back({r, x[0], x[1]});
-              side_max.observe(r, x, first_invariant(x[0], s_.a / r));
-              return true;
-            }))
+    Knots<PartTwoState> knots;
+    if (!integrate_part(side,
+                        y,
+                        r_corner,
+                        r_top,
+                        part_one_.settings().integration,
+                        [&](double r, const PartTwoState& x) {
+                          if (record) knots.add(r, x);
+                          side_max.observe(r, x, first_invariant(x[0], s_.a / r));
+                          return true;
+                        }))
       return std::nullopt;
     const double length = -y[1];
     const double f = r_top * membrane_stress(law_, y[0], p).s1;
@@ -278,9 +289,13 @@ class FlatPunchContact {
     sol.f = f;
     sol.max_i1 = 3.0;
     sol.part_two.clear();
-    // Samples as attach takes them: from the top down, y measured down from the top.
-    for (auto it = upward.rbegin(); it != upward.rend(); ++it)
-      sol.part_two.push_back({(*it)[0], (*it)[1], (*it)[2] + length});
+    if (record) {
+      // Samples as attach takes them: from the top down, y measured down from the top.
+      const auto upward =
+          even_samples(side, knots, field_intervals(), part_one_.settings().integration);
+      for (auto it = upward.rbegin(); it != upward.rend(); ++it)
+        sol.part_two.push_back({it->first, it->second[0], it->second[1] + length});
+    }
     finish_part_two(side, side_max, r_corner, {*l1_corner, length}, sol);
     sol.depth = length;
     return FreeStart{{0.0, y[0], p, 0.0}, r_top, kHalfPi, capstan};
@@ -557,6 +572,9 @@ class FlatPunchContact {
   }
 
  private:
+  // Part II is sampled as Part I is (FreePart).
+  int field_intervals() const { return std::max(1, part_one_.settings().field_points); }
+
   std::optional<double> residual(Configuration c, double f, double p) const {
     return part_one_.residual(f, free_start(c, f, p));
   }
@@ -636,6 +654,7 @@ class FlatPunchContact {
       plan.lo = lowest;
       plan.g_lo = g_low;
       plan.cap = *onset;
+      plan.g_cap = g_onset;  // the indicator is the residual at the onset stretch
     }
     plan.no_root_message =
         fmt::format("slip shooting ({}) found no parameter meeting the clamp condition",
