@@ -50,7 +50,10 @@ class FreePart {
   double locking_i1() const { return locking_i1_; }
 
   // Part I at force f from `start` to the clamp; with `samples`, the solution is sampled.
-  FreePartRun run(double f, const FreeStart& start, std::vector<PartOneSample>* samples) const {
+  // Without `find_maximum` the largest I1 is left out (the shooting's residuals need only the
+  // clamp: its search between the steps costs about a third of an integration).
+  FreePartRun run(double f, const FreeStart& start, std::vector<PartOneSample>* samples,
+                  bool find_maximum = true) const {
     FreePartRun run;
     PartOneState x = start.state;
     const double r0 = start.r0;
@@ -61,7 +64,7 @@ class FreePart {
     Knots<PartOneState> knots;
     run.ok =
         integrate_part(system, x, r0, 1.0, s_.integration, [&](double r, const PartOneState& y) {
-          i1_max.observe(r, y, first_invariant(y[1], y[2]));
+          if (find_maximum) i1_max.observe(r, y, first_invariant(y[1], y[2]));
           if (samples) knots.add(r, y);
           last_l2 = y[2];
           if (y[0] < 0.0) {  // meridian turned back towards the axis: hoop stretch too small
@@ -77,7 +80,7 @@ class FreePart {
       for (const auto& [r, y] :
            even_samples(system, knots, std::max(1, s_.field_points), s_.integration))
         samples->push_back({r, y[0], y[1], y[2], y[3]});
-    if (run.ok) {
+    if (run.ok && find_maximum) {
       const auto found = refined_maximum(i1_max, system, [](double, const PartOneState& y) {
         return first_invariant(y[1], y[2]);
       });
@@ -94,7 +97,7 @@ class FreePart {
   // nor to where it turns back (the material locks on the way).
   std::optional<double> residual(double f, const std::optional<FreeStart>& start) const {
     if (!start) return std::nullopt;
-    const auto r = run(f, *start, nullptr);
+    const auto r = run(f, *start, nullptr, false);
     return r.ok || r.turned_back ? std::optional<double>(r.residual) : std::nullopt;
   }
 

@@ -24,17 +24,20 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 template <class Shooting, class Criterion>
 std::optional<double> first_force_where(const Shooting& shooting, Stage stage, double f_lo,
                                         double g_lo, Criterion&& g) {
+  // asinh keeps the root and the sign but not the range: a soft law's I1 can reach 1e24 at a
+  // force a tenfold past the root, and TOMS 748's secant through such a value lands 20 decades
+  // below it, at forces whose strains (~1e-16) the shooting cannot resolve.
   auto residual = [&](double f) -> std::optional<double> {
     const auto sol = shooting.solve(stage, f);
     if (!sol.ok()) return std::nullopt;
-    return g(sol);
+    return std::asinh(g(sol));
   };
   // A stage whose solutions end before the criterion is met closes the bracket on a jump (to the
   // beyond-root stand-in), where TOMS 748 falls back to bisections: ~3 log2(1 / eps) = 160
   // iterations to bracket the end to a few ulps, more than one shooting's allowance.
   return shoot_increasing(residual,
                           f_lo,
-                          g_lo,
+                          std::asinh(g_lo),
                           kInf,
                           4 * shooting.settings().max_iterations,
                           std::max(0.25 * f_lo, 0.05));
