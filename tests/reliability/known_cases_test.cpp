@@ -29,16 +29,29 @@ TEST(KnownCases, HeldToTheBranchEndIsNotReached) {
 }
 
 // A sliding Part II whose top stretch is 0.30 (material from beyond the indenter's radius
-// climbs its side): the clamp residual changes by 6e-8 for 1e-12 of the parameter, so the
-// sampled integration of the puncture state alone moved it by 1e-8 from the shooting's root
-// ("the shooting stalled at clamp residual 1e-08").  Secant steps on the sampled residual
-// converge it: the puncture is where the largest I1 is the critical one.
+// climbs its side): the clamp residual changes by 6e-8 for 1e-12 of the parameter, so a sampled
+// integration that took other steps than the shooting's moved it by 1e-8 from the shooting's
+// root ("the shooting stalled at clamp residual 1e-08").  Samples are now taken between the
+// shooting's own steps: the puncture is where the largest I1 is the critical one.
 TEST(KnownCases, SteepPartTwoPunctureConverges) {
   const Problem p = random_membrane(kSeed, 4309);
   const PuncturePrediction at = predict_puncture(p);
   ASSERT_TRUE(at.ok()) << at.message;
   EXPECT_LE(at.state.clamp_residual, 1e-10);
   EXPECT_NEAR(at.state.max_first_invariant / p.critical_i1, 1.0, 1e-6);
+}
+
+// A 0.018 mm probe on a 7.7 mm neo-Hookean membrane: 10 times the puncture force its largest I1
+// is 1e24, and the search along the path, secant through that value, went to forces of 1e-25
+// whose strains (1e-16) the shooting cannot resolve ("the shooting stalled at clamp residual
+// -1", taken for the end of the states).  On asinh of the excess it brackets the puncture: the
+// largest I1 there is the critical one.
+TEST(KnownCases, SoftLawPastItsPunctureKeepsTheSearchInRange) {
+  const Problem p = random_membrane(kSeed, 3577);
+  const PuncturePrediction at = predict_puncture(p);
+  ASSERT_TRUE(at.ok()) << at.message;
+  EXPECT_NEAR(at.state.max_first_invariant / p.critical_i1, 1.0, 1e-6);
+  EXPECT_LE(at.state.clamp_residual, 1e-10);
 }
 
 // Held until a depth of 12.84 mm that the held branch does not reach: it ends (vertical exit)
