@@ -40,9 +40,13 @@ class DepthNewton {
   // Forget the Jacobian (a new configuration starts).
   void reset() { have_jacobian_ = false; }
 
+  // The states' Part I maxima of I1 are not wanted (the caller assembles the state found again).
+  void skip_part_one_maximum() { part_one_maximum_ = false; }
+
   // From (f, p), or (q, p) under contact control.
   std::optional<ScaledSolution> solve(Configuration c, double depth, double f_or_q, double p) {
     floor_ = solver_.parameter_floor(c);
+    evaluations_ = 0;
     Eigen::Vector2d x(std::log(control_ == DepthControl::Force ? f_or_q : f_or_q - p),
                       std::log(p - floor_));
     if (!x.allFinite()) return std::nullopt;
@@ -113,16 +117,18 @@ class DepthNewton {
   }
 
   // The solution passed Newton's test on both residuals (its own tolerance).
-  static ScaledSolution accepted(ScaledSolution sol) {
+  ScaledSolution accepted(ScaledSolution sol) const {
     sol.status = Status::Converged;
     sol.message.clear();
+    sol.evaluations = evaluations_;
     return sol;
   }
 
-  ScaledSolution evaluate(Configuration c, const Eigen::Vector2d& x) const {
+  ScaledSolution evaluate(Configuration c, const Eigen::Vector2d& x) {
+    ++evaluations_;
     const double p = floor_ + std::exp(x[1]);
     return control_ == DepthControl::Force
-               ? solver_.assemble(c, std::exp(x[0]), p, record_)
+               ? solver_.assemble(c, std::exp(x[0]), p, record_, part_one_maximum_)
                : solver_.assemble_at_contact(c, p + std::exp(x[0]), p, record_);
   }
 
@@ -133,6 +139,8 @@ class DepthNewton {
   double floor_ = 1.0;
   Eigen::PartialPivLU<Eigen::Matrix2d> lu_;
   bool have_jacobian_ = false;
+  bool part_one_maximum_ = true;
+  int evaluations_ = 0;  // of the current solve
 };
 
 }  // namespace puncture::detail

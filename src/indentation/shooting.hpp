@@ -39,8 +39,11 @@ class IndentationShooting {
     return contact_.parameter_floor(configuration);
   }
 
-  // The equilibrium at force f in `stage` (the contact model picks the configuration).
-  ScaledSolution solve(Stage stage, double f) const {
+  // The equilibrium at force f in `stage` (the contact model picks the configuration); without
+  // `record` its fields are not sampled.  `rough`: the root of the coarse integration alone,
+  // integrated finely once (its clamp residual ~1e-7, so usually judged not converged: rough()),
+  // for the steps of a search that polishes its own end.
+  ScaledSolution solve(Stage stage, double f, bool record = true, bool rough = false) const {
     if (f == 0.0) return contact_.unloaded(record_unloaded_);
     ScaledSolution sol;
     sol.f = f;
@@ -57,7 +60,7 @@ class IndentationShooting {
       return sol;
     }
     auto fine = [&](double p) { return counted(plan.configuration, p); };
-    std::optional<double> root = coarse_then_fine(plan, f, fine, evals);
+    std::optional<double> root = coarse_then_fine(plan, f, fine, evals, rough);
     if (!root)
       root = shoot_increasing(fine,
                               plan.lo,
@@ -75,7 +78,7 @@ class IndentationShooting {
       sol.evaluations = evals;
       return sol;
     }
-    sol = assemble(plan.configuration, f, *root, true);
+    sol = assemble(plan.configuration, f, *root, record);
     sol.evaluations += evals;
     accept_collapsed_bracket(sol);
     if (!sol.ok() && sol.integrated && locks(sol)) {
@@ -92,7 +95,11 @@ class IndentationShooting {
   // The state of `configuration` at force f and parameter p, integrated once.  Its residual is
   // zero only at an equilibrium; status is Converged when it is within the shooting tolerance.
   // With `record`, Part I (and the parts in contact) are sampled.
-  ScaledSolution assemble(Configuration c, double f, double p, bool record) const {
+  // Without `part_one_maximum` Part I's largest I1 is not searched between its steps (sol.max_i1
+  // then holds the parts in contact only): for the iterations of a search that assembles its
+  // end again.
+  ScaledSolution assemble(Configuration c, double f, double p, bool record,
+                          bool part_one_maximum = true) const {
     ScaledSolution sol;
     sol.f = f;
     sol.parameter = p;
@@ -100,7 +107,9 @@ class IndentationShooting {
     sol.evaluations = 1;
     const auto st = contact_.free_start(c, f, p);
     if (!st) return outside_domain(std::move(sol));
-    if (!run_free_part(*st, record, sol) || !contact_.attach(c, *st, p, record, sol)) return sol;
+    if (!run_free_part(*st, record, sol, part_one_maximum) ||
+        !contact_.attach(c, *st, p, record, sol))
+      return sol;
     return judged(std::move(sol));
   }
 
@@ -228,6 +237,7 @@ class IndentationShooting {
   // over solve(); the loading curve uses the faster DepthNewton and falls back on this).
   ScaledSolution solve_at_depth(Stage stage, double d, double f_guess = 0.0) const {
     if (d == 0.0) return solve(stage, 0.0);
+    if (auto fast = newton_at_depth(stage, d, f_guess)) return std::move(*fast);
     ScaledSolution last_failure;
     std::optional<ScaledSolution> deepest;  // the deepest state short of d the search met
     auto keep_if_deepest = [&](const ScaledSolution& sol) {
@@ -305,6 +315,61 @@ class IndentationShooting {
     return out;
   }
 
+  // The state at depth d by Newton in depth control (DepthNewton) from a force solve near it.
+  // The force is found first by secant steps in (log depth, log force) over rough force solves
+  // (solve's `rough`), from f_guess or from f = d^3 (the small-deflection law
+  // f = 3 C d^3 / (2 pi) with C ~ 2, the paper's geometry), until the depth is within 5 % of d;
+  // Newton starts from that state carried to d by the last local powers of f and p - p0 (near
+  // zero load f ~ d^3, p - p0 ~ d^2).  The configuration is confirmed by the contact's plan at
+  // the force found.  Empty when a step fails: the force search of solve_at_depth runs then.
+  std::optional<ScaledSolution> newton_at_depth(Stage stage, double d, double f_guess) const {
+    ScaledSolution near = solve(stage, f_guess > 0.0 ? f_guess : d * d * d, false, true);
+    const auto usable = [](const ScaledSolution& x) {
+      return x.integrated && std::abs(x.residual) <= kRoughResidual && x.depth > 0.0;
+    };
+    int evaluations = near.evaluations;
+    std::optional<ScaledSolution> before;
+    auto power = [&](double fallback, auto&& of) {
+      if (!before || !(before->depth > 0.0) || before->depth == near.depth) return fallback;
+      const double k = std::log(of(near) / of(*before)) / std::log(near.depth / before->depth);
+      return std::isfinite(k) ? std::clamp(k, 0.5, 8.0) : fallback;
+    };
+    const auto force = [](const ScaledSolution& x) { return x.f; };
+    for (int k = 0; k < kNearSolves && usable(near) &&
+                    std::abs(std::log(d / near.depth)) > std::log(kNearEnough);
+         ++k) {
+      const double f_next = near.f * std::pow(d / near.depth, power(kFirstPower, force));
+      before = std::move(near);
+      near = solve(stage, f_next, false, true);
+      evaluations += near.evaluations;
+    }
+    if (!usable(near) || near.configuration == Configuration::Unloaded) return std::nullopt;
+    const Configuration c = near.configuration;
+    const double floor = parameter_floor(c), ratio = d / near.depth;
+    if (before && before->configuration != c) before.reset();
+    const double p_power =
+        power(2.0, [&](const ScaledSolution& x) { return std::max(x.parameter - floor, 1e-300); });
+    const double p = floor + (near.parameter - floor) * std::pow(ratio, p_power);
+    if (!(p > floor)) return std::nullopt;
+    DepthNewton<IndentationShooting> newton(*this, settings().shooting_tol);
+    newton.skip_part_one_maximum();  // the state found is assembled again below
+    const auto found = newton.solve(c, d, near.f * std::pow(ratio, power(kFirstPower, force)), p);
+    if (!found || !(std::abs(found->depth - d) <= kDepthPolish * d)) return std::nullopt;
+    auto residual_at = [&](Configuration cc, double q) { return residual(cc, found->f, q); };
+    if (contact_.plan(stage, found->f, residual_at).configuration != c) return std::nullopt;
+    // The same integration with the fields sampled: the same state.
+    ScaledSolution out = assemble(c, found->f, found->parameter, true);
+    if (!out.ok()) return std::nullopt;
+    out.evaluations += evaluations + found->evaluations + 1;
+    return out;
+  }
+  static constexpr int kNearSolves = 5;
+  static constexpr double kNearEnough = 1.05;
+  // The first step's power of the depth: between the small-deflection 3 and the ~1.5 of the
+  // paper's membrane at 20 to 35 mm.
+  static constexpr double kFirstPower = 2.0;
+  static constexpr double kRoughResidual = 1e-5;
+
  private:
   // The coarse integration of the shooting's first phase: about a third of the fine one's steps.
   static ShootingSettings coarse(ShootingSettings s) {
@@ -321,8 +386,8 @@ class IndentationShooting {
   // root or the polish leaves the bracket, meets a stand-in residual or does not converge in
   // kPolishSteps: the fine search then runs in full.
   template <class Fine>
-  std::optional<double> coarse_then_fine(const ShootingPlan& plan, double f, Fine& fine,
-                                         int& evals) const {
+  std::optional<double> coarse_then_fine(const ShootingPlan& plan, double f, Fine& fine, int& evals,
+                                         bool rough) const {
     if (std::pow(f, 2.0 / 3.0) < 1e4 * kCoarseRelTol) return std::nullopt;
     auto coarse = [&](double p) {
       ++evals;
@@ -335,7 +400,7 @@ class IndentationShooting {
                                            settings().max_iterations,
                                            plan.initial_step,
                                            {1e-2 * kCoarseRelTol, std::nullopt});
-    if (!p_coarse) return std::nullopt;
+    if (!p_coarse || rough) return p_coarse;
     const double lo = plan.lo, hi = std::isfinite(plan.cap) ? plan.cap : 2.0 * *p_coarse + 1.0;
     double p0 = *p_coarse;
     const std::optional<double> g0_fine = fine(p0);
@@ -369,8 +434,9 @@ class IndentationShooting {
 
   // Part I from `st` at force sol.f into sol: clamp residual, height, largest I1; false (with
   // the message) when it cannot be integrated to the clamp.
-  bool run_free_part(const FreeStart& st, bool record, ScaledSolution& sol) const {
-    const auto run = part_one_.run(sol.f, st, record ? &sol.part_one : nullptr);
+  bool run_free_part(const FreeStart& st, bool record, ScaledSolution& sol,
+                     bool find_maximum = true) const {
+    const auto run = part_one_.run(sol.f, st, record ? &sol.part_one : nullptr, find_maximum);
     if (!run.ok) {
       sol.message = run.turned_back ? "Part I turns back towards the axis before the clamp"
                                     : "Part I cannot be integrated to the clamp (material locks)";
