@@ -144,6 +144,14 @@ class IndentationShooting {
   std::optional<double> residual(Configuration c, double f, double p) const {
     return part_one_.residual(f, contact_.free_start(c, f, p));
   }
+  // Clamp residual of Part I from `start` on the coarse integration (a contact model's own
+  // searches use it as the shooting does).
+  std::optional<double> coarse_free_residual(double f, const FreeStart& start) const {
+    return coarse_part_one_.residual(f, start);
+  }
+  const IntegrationSettings& coarse_integration() const {
+    return coarse_part_one_.settings().integration;
+  }
 
   // From a state shallower than d (the force bracket's end), the state at depth d followed in
   // depth control: Newton on (force, shooting parameter) with the clamp and depth residuals
@@ -401,28 +409,10 @@ class IndentationShooting {
                                            plan.initial_step,
                                            {1e-2 * kCoarseRelTol, std::nullopt});
     if (!p_coarse || rough) return p_coarse;
-    const double lo = plan.lo, hi = std::isfinite(plan.cap) ? plan.cap : 2.0 * *p_coarse + 1.0;
-    double p0 = *p_coarse;
-    const std::optional<double> g0_fine = fine(p0);
-    if (!g0_fine || std::abs(*g0_fine) > 1e-2) return std::nullopt;
-    double g0 = *g0_fine;
-    if (std::abs(g0) <= good_enough(f)) return p0;
-    // The first slope from the coarse residual, a step of 1e-4 beside the coarse root.
-    const double h = 1e-4 * std::max(std::abs(p0 - parameter_floor(plan.configuration)), 1e-8);
-    const auto g_side = coarse(p0 + h), g_here = coarse(p0);
-    if (!g_side || !g_here) return std::nullopt;
-    double slope = (*g_side - *g_here) / h;
-    for (int k = 0; k < kPolishSteps; ++k) {
-      const double p1 = p0 - g0 / slope;
-      if (!std::isfinite(p1) || !(p1 > lo) || !(p1 < hi)) return std::nullopt;
-      const std::optional<double> g1 = fine(p1);
-      if (!g1 || std::abs(*g1) > 1e-2) return std::nullopt;
-      if (std::abs(*g1) <= good_enough(f)) return p1;
-      slope = (*g1 - g0) / (p1 - p0);
-      p0 = p1;
-      g0 = *g1;
-    }
-    return std::nullopt;
+    const double hi = std::isfinite(plan.cap) ? plan.cap : 2.0 * *p_coarse + 1.0;
+    const double scale = std::max(std::abs(*p_coarse - parameter_floor(plan.configuration)), 1e-8);
+    return polish_coarse_root(
+        fine, coarse, *p_coarse, scale, plan.lo, hi, good_enough(f), 1e-2, kPolishSteps);
   }
   static constexpr int kPolishSteps = 4;
 

@@ -81,4 +81,34 @@ std::optional<double> shoot_increasing(Residual&& g_in, double lo, double g_lo, 
   return 0.5 * (bracket.first + bracket.second);
 }
 
+// The root of g polished from a coarse one: secant steps on g from p0, the first with the slope
+// of a coarse model of g (a step of 1e-4 of `scale` beside p0), within (lo, hi).  The root is
+// the first parameter with |g| <= good_enough.  Empty when a value is missing or beyond
+// give_up (a stand-in, or too far from the root for secant steps), a step leaves (lo, hi) or
+// max_steps do not converge: the caller's full search runs then.
+template <class Fine, class Coarse>
+std::optional<double> polish_coarse_root(Fine&& fine, Coarse&& coarse, double p0, double scale,
+                                         double lo, double hi, double good_enough, double give_up,
+                                         int max_steps) {
+  const std::optional<double> g_start = fine(p0);
+  if (!g_start || !(std::abs(*g_start) <= give_up)) return std::nullopt;
+  double g0 = *g_start;
+  if (std::abs(g0) <= good_enough) return p0;
+  const double h = 1e-4 * scale;
+  const std::optional<double> g_side = coarse(p0 + h), g_here = coarse(p0);
+  if (!g_side || !g_here) return std::nullopt;
+  double slope = (*g_side - *g_here) / h;
+  for (int k = 0; k < max_steps; ++k) {
+    const double p1 = p0 - g0 / slope;
+    if (!std::isfinite(p1) || !(p1 > lo) || !(p1 < hi)) return std::nullopt;
+    const std::optional<double> g1 = fine(p1);
+    if (!g1 || !(std::abs(*g1) <= give_up)) return std::nullopt;
+    if (std::abs(*g1) <= good_enough) return p1;
+    slope = (*g1 - g0) / (p1 - p0);
+    p0 = p1;
+    g0 = *g1;
+  }
+  return std::nullopt;
+}
+
 }  // namespace puncture::detail

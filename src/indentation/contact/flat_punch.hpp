@@ -259,8 +259,46 @@ class FlatPunchContact {
   // does not hold or Part II cannot be integrated (locking).
   std::optional<FreeStart> contact_start(Configuration c, double l3, double p, bool record,
                                          ScaledSolution& sol) const {
-    if (c != Configuration::SlipWithPartTwo || !(p > s_.a) || !(l3 > p) || !std::isfinite(l3) ||
-        !(first_invariant(l3, l3) < locking_i1_))
+    if (c != Configuration::SlipWithPartTwo) return std::nullopt;
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
+    InteriorMaximum<PartTwoState> side_max;
+    Knots<PartTwoState> knots;
+    const auto up = side_from_corner(
+        l3, p, part_one_.settings().integration, [&](double r, const PartTwoState& x) {
+          if (record) knots.add(r, x);
+          side_max.observe(r, x, first_invariant(x[0], s_.a / r));
+        });
+    if (!up) return std::nullopt;
+    sol.f = up->f;
+    sol.max_i1 = 3.0;
+    sol.part_two.clear();
+    if (record) {
+      // Samples as attach takes them: from the top down, y measured down from the top.
+      const auto upward =
+          even_samples(side, knots, field_intervals(), part_one_.settings().integration);
+      for (auto it = upward.rbegin(); it != upward.rend(); ++it)
+        sol.part_two.push_back({it->first, it->second[0], it->second[1] + up->length});
+    }
+    finish_part_two(side, side_max, s_.a / l3, {up->l1_corner, up->length}, sol);
+    sol.depth = up->length;
+    return up->start;
+  }
+
+  // Part II marched up the side from the corner, where the capstan condition with the Part III
+  // stretch l3 gives lambda1 (Eq. 22), to its top at R = a / p, with observe(R, state) at every
+  // step: the start of Part I there (leaving vertically), its force f = R s1 and Part II's length;
+  // empty where l3 > p > a / A does not hold or Part II cannot be integrated (locking).
+  struct SideFromCorner {
+    FreeStart start;
+    double f;
+    double length;
+    double l1_corner;
+  };
+  template <class Observer>
+  std::optional<SideFromCorner> side_from_corner(double l3, double p,
+                                                 const IntegrationSettings& integration,
+                                                 Observer&& observe) const {
+    if (!(p > s_.a) || !(l3 > p) || !std::isfinite(l3) || !(first_invariant(l3, l3) < locking_i1_))
       return std::nullopt;
     const double capstan = std::exp(s_.mu * kHalfPi);
     const auto l1_corner =
@@ -270,35 +308,15 @@ class FlatPunchContact {
     const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
     // y runs from 0 at the corner to minus Part II's length at the top (it grows downward).
     PartTwoState y{*l1_corner, 0.0};
-    InteriorMaximum<PartTwoState> side_max;
-    Knots<PartTwoState> knots;
-    if (!integrate_part(side,
-                        y,
-                        r_corner,
-                        r_top,
-                        part_one_.settings().integration,
-                        [&](double r, const PartTwoState& x) {
-                          if (record) knots.add(r, x);
-                          side_max.observe(r, x, first_invariant(x[0], s_.a / r));
-                          return true;
-                        }))
+    if (!integrate_part(
+            side, y, r_corner, r_top, integration, [&](double r, const PartTwoState& x) {
+              observe(r, x);
+              return true;
+            }))
       return std::nullopt;
-    const double length = -y[1];
     const double f = r_top * membrane_stress(law_, y[0], p).s1;
     if (!(f > 0.0) || !std::isfinite(f)) return std::nullopt;
-    sol.f = f;
-    sol.max_i1 = 3.0;
-    sol.part_two.clear();
-    if (record) {
-      // Samples as attach takes them: from the top down, y measured down from the top.
-      const auto upward =
-          even_samples(side, knots, field_intervals(), part_one_.settings().integration);
-      for (auto it = upward.rbegin(); it != upward.rend(); ++it)
-        sol.part_two.push_back({it->first, it->second[0], it->second[1] + length});
-    }
-    finish_part_two(side, side_max, r_corner, {*l1_corner, length}, sol);
-    sol.depth = length;
-    return FreeStart{{0.0, y[0], p, 0.0}, r_top, kHalfPi, capstan};
+    return SideFromCorner{{{0.0, y[0], p, 0.0}, r_top, kHalfPi, capstan}, f, -y[1], *l1_corner};
   }
 
   // The stick stage holds the membrane at the edge; the slip stage finds whether Part II exists.
@@ -411,49 +429,6 @@ class FlatPunchContact {
     if (!l1_corner) return std::nullopt;
     const double r_corner = s_.a / *l3;
     const double q_corner = r_corner * membrane_stress(law_, *l1_corner, *l3).s1;  // R s1 there
-    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
-    // Top of Part II for force f: march up from the corner until R s1 = f (Eq. 12 with phi = pi/2).
-    auto top_stretch = [&](double f) -> std::optional<double> {
-      PartTwoState y{*l1_corner, 0.0};
-      double r_top = -1.0, r_prev = r_corner;
-      PartTwoState y_prev = y;
-      auto q = [&](double r, const PartTwoState& state) {
-        return r * membrane_stress(law_, state[0], s_.a / r).s1 - f;
-      };
-      const bool ok = integrate_part(side,
-                                     y,
-                                     r_corner,
-                                     1.0,
-                                     part_one_.settings().integration,
-                                     [&](double r, const PartTwoState& state) {
-                                       if (q(r, state) >= 0.0) {
-                                         r_top = r;
-                                         return false;
-                                       }
-                                       r_prev = r;
-                                       y_prev = state;
-                                       return true;
-                                     });
-      if (!ok || r_top < 0.0 || r_top == r_corner) return std::nullopt;
-      // Inside the last step, re-integrated adaptively from its start; a trial that cannot be
-      // integrated (locking) counts as past the top.
-      auto q_at = [&](double r) {
-        const auto y_r = step_or_advance(side, y_prev, r_prev, r, part_one_.settings().integration);
-        return y_r ? q(r, *y_r) : 1.0;
-      };
-      const double q_prev = q_at(r_prev), q_top = q_at(r_top);
-      if (!(q_prev * q_top <= 0.0)) return std::nullopt;  // no top in the step (near locking)
-      std::uintmax_t iterations = 100;
-      const auto bracket =
-          boost::math::tools::toms748_solve(q_at,
-                                            r_prev,
-                                            r_top,
-                                            q_prev,
-                                            q_top,
-                                            boost::math::tools::eps_tolerance<double>(50),
-                                            iterations);
-      return s_.a / (0.5 * (bracket.first + bracket.second));
-    };
     // With R s1 unchanged up the side (no friction, ring balance) the force is R s1 at the corner
     // and the position of the top is left to the ordinary shooting at that force.
     if (s_.mu == 0.0 && s_.equation == PartTwoEquation::RingBalance) {
@@ -462,26 +437,43 @@ class FlatPunchContact {
         return std::nullopt;
       return sol;
     }
-    // A larger force lifts the top of Part II, lowering its hoop stretch and so the clamp
-    // residual: shoot on minus the residual, from the force at which Part II has zero length.
-    auto g = [&](double f) -> std::optional<double> {
-      const auto top = top_stretch(f);
-      if (!top) return std::nullopt;
-      const auto r = residual(Configuration::SlipWithPartTwo, f, *top);
-      return r ? std::optional<double>(-*r) : std::nullopt;
+    // With the corner fixed, the state is given by the hoop stretch p at the top of Part II
+    // (contact_start: Part II marched up to R = a / p, where f = R s1).  The clamp residual rises
+    // from a - 1 < 0 as the top nears the clamp (p -> a) to positive values as Part II shrinks to
+    // nothing (p -> l3): shoot on p, on the coarse integration first, then polished on the fine.
+    const auto none = [](double, const PartTwoState&) {};
+    const IntegrationSettings& fine = part_one_.settings().integration;
+    auto g = [&](double p) -> std::optional<double> {
+      const auto up = side_from_corner(*l3, p, fine, none);
+      return up ? part_one_.residual(up->f, up->start) : std::nullopt;
     };
-    const double f_lo = q_corner * (1.0 + 1e-9);
-    const auto g_lo = g(f_lo);
+    auto g_coarse = [&](double p) -> std::optional<double> {
+      const auto up = side_from_corner(*l3, p, shooting.coarse_integration(), none);
+      return up ? shooting.coarse_free_residual(up->f, up->start) : std::nullopt;
+    };
+    // The top at the clamp may lie past locking (a long Part II): tops from l3 downward,
+    // a + (l3 - a) / 2^k, until the residual is negative (as side_bracket_start).
+    const double hi = *l3 * (1.0 - 1e-9);
+    double lo = hi;
+    std::optional<double> g_lo;
+    for (int k = 1; k <= 50 && !(g_lo && *g_lo < 0.0); ++k) {
+      lo = s_.a + (hi - s_.a) / std::ldexp(1.0, k);
+      g_lo = g_coarse(lo);
+    }
     if (!g_lo || *g_lo >= 0.0) return std::nullopt;
-    const auto f = shoot_increasing(g,
-                                    f_lo,
-                                    *g_lo,
-                                    std::numeric_limits<double>::infinity(),
-                                    part_one_.settings().max_iterations,
-                                    0.25 * f_lo);
-    if (!f) return std::nullopt;
-    const auto top = top_stretch(*f);
+    // A clamp residual within 1e-2 of the shooting's tolerance is the root (as in the shooting).
+    const double good_enough = 1e-2 * part_one_.settings().shooting_tol;
+    const int iterations = part_one_.settings().max_iterations;
+    std::optional<double> top;
+    if (const auto p_coarse =
+            shoot_increasing(g_coarse, lo, *g_lo, hi, iterations, 0.0, {1e-8, {}}))
+      top = polish_coarse_root(
+          g, g_coarse, *p_coarse, *p_coarse - s_.a, lo, hi, good_enough, 1e-2, 4);
+    if (!top) top = shoot_increasing(g, lo, *g_lo, hi, iterations, 0.0, {good_enough, {}});
     if (!top) return std::nullopt;
+    const auto up = side_from_corner(*l3, *top, fine, none);
+    if (!up) return std::nullopt;
+    const auto f = std::optional<double>(up->f);
     auto sol = shooting.assemble(Configuration::SlipWithPartTwo, *f, *top, false);
     // The march down must find the same corner, and the crack must sit there.
     if (!sol.ok() || std::abs(sol.part_three_stretch - *l3) > 1e-7 * *l3 ||
