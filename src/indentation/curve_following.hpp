@@ -19,12 +19,15 @@ namespace puncture::detail {
 // Extrapolation of (f, p) to a new depth from the last converged points of a segment: the
 // predictor of the Newton corrector.  Near zero depth f ~ depth^3 and p - 1 ~ depth^2
 // (membrane theory), so it works with log f and log(p - p0) (p0 the parameter's floor) against
-// log depth: from one point with those powers, from two to four by Lagrange interpolation.
+// log depth: from one point with those powers, from two to six by Lagrange interpolation.  (More
+// points amplify the points' own error, ~1e-9, beyond what they gain: with six the first guess
+// of a point deep in the curve is ~1e-8 off, one Newton step from converged.)
 struct Predictor {
   std::vector<std::array<double, 3>> history;  // depth, f, parameter
+  static constexpr std::size_t kOrder = 6;     // points used at most
   bool usable() const { return !history.empty(); }
   std::array<double, 2> at(double d, double floor) const {
-    const std::size_t n = history.size(), m = std::min<std::size_t>(n, 4);
+    const std::size_t n = history.size(), m = std::min<std::size_t>(n, kOrder);
     if (n == 1) {
       const auto& h = history.front();
       const double ratio = d / h[0];

@@ -3,11 +3,11 @@
 // (log f, log(p - p0)) of the force and the shooting parameter above its floor p0
 // (the contact model's parameter_floor; near zero load both f and p - 1 vanish as powers of the
 // depth, so relative steps suit them), with residuals (clamp condition, depth), one integration per
-// iteration.  The Jacobian is taken by finite differences and reused from point to point along
-// a loading curve (a chord method) until the convergence slows down, so that a point started from
-// a good extrapolation of the previous ones costs three or four integrations.  Used for speed
-// only: any failure falls back to the bracketing solver
-// (IndentationShooting::solve_at_depth).
+// iteration.  The Jacobian is taken by finite differences, then kept up to date by Broyden's
+// update from iteration to iteration and from point to point along a loading curve, and taken
+// afresh only when a step does not halve the residual: a point started from a good
+// extrapolation of the previous ones costs two or three integrations.  Used for speed only: any
+// failure falls back to the bracketing solver (IndentationShooting::solve_at_depth).
 #include <Eigen/Dense>
 #include <cmath>
 #include <optional>
@@ -31,8 +31,8 @@ inline double depth_unknown(DepthControl control, const ScaledSolution& s) {
 template <class Shooting>
 class DepthNewton {
  public:
-  // With `record`, every state is integrated with its fields sampled (steps no longer than the
-  // samples' spacing): a state reported with its fields then meets the depth itself.
+  // With `record`, every state is integrated with its fields sampled (between the same steps:
+  // the same state).
   DepthNewton(const Shooting& solver, double residual_tol, bool record = false,
               DepthControl control = DepthControl::Force)
       : solver_(solver), tol_(residual_tol), record_(record), control_(control) {}
@@ -79,10 +79,16 @@ class DepthNewton {
       }
       if (!next.integrated) return std::nullopt;
       const Eigen::Vector2d r_next = value(next);
-      // A step that does not shrink the residual tenfold means a stale Jacobian (or strong
-      // curvature): take a fresh one where we now are, which makes the next step Newton's.
-      if (r_next.cwiseAbs().maxCoeff() > kChordContraction * r.cwiseAbs().maxCoeff())
+      // Broyden's update keeps the Jacobian in step along the iterations and the curve at no
+      // cost; a step that does not even halve the residual means it is too stale (or the
+      // curvature strong): a fresh one is taken where we now are.
+      const Eigen::Vector2d dx = scale * step;
+      jacobian_ += (r_next - r - jacobian_ * dx) * dx.transpose() / dx.squaredNorm();
+      if (r_next.cwiseAbs().maxCoeff() > kRefreshContraction * r.cwiseAbs().maxCoeff() ||
+          !jacobian_.allFinite() || !(std::abs(jacobian_.determinant()) > 0.0))
         have_jacobian_ = false;
+      else
+        lu_.compute(jacobian_);
       x += scale * step;
       r = r_next;
       sol = std::move(next);
@@ -95,14 +101,14 @@ class DepthNewton {
  private:
   static constexpr int kMaxIterations = 10;
   static constexpr double kLogStep = 1e-5;
-  static constexpr double kChordContraction = 0.1;
+  static constexpr double kRefreshContraction = 0.5;
 
   bool finite_difference_jacobian(Configuration c, const Eigen::Vector2d& x,
                                   const Eigen::Vector2d& r, double depth) {
     // Forward differences with steps of 1e-5 in the logs: truncation ~1e-5 relative, and the
     // integration's noise (~1e-12 absolute) stays small against the change it makes in the
     // residuals even near zero load, where they are ~1e-5 of their own size.
-    Eigen::Matrix2d jacobian;
+    Eigen::Matrix2d& jacobian = jacobian_;
     for (int j = 0; j < 2; ++j) {
       Eigen::Vector2d xp = x;
       const double h = kLogStep;
@@ -137,6 +143,7 @@ class DepthNewton {
   bool record_;
   DepthControl control_;
   double floor_ = 1.0;
+  Eigen::Matrix2d jacobian_ = Eigen::Matrix2d::Zero();
   Eigen::PartialPivLU<Eigen::Matrix2d> lu_;
   bool have_jacobian_ = false;
   bool part_one_maximum_ = true;
