@@ -57,6 +57,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
   const auto& contact = shooting.contact();
   const FailureCriterion criterion = failure_criterion(p);
   DepthNewton<Shooting> newton(shooting, curve_tol);
+  newton.without_maxima(true);  // only the points' own states need their largest I1
   Predictor predictor;
   Stage segment_stage = boundary.first_stage;
   Configuration last_configuration = Configuration::Unloaded;

@@ -40,8 +40,14 @@ class DepthNewton {
   // Forget the Jacobian (a new configuration starts).
   void reset() { have_jacobian_ = false; }
 
-  // The states' Part I maxima of I1 are not wanted (the caller assembles the state found again).
-  void skip_part_one_maximum() { part_one_maximum_ = false; }
+  // The iterations skip the search for the largest I1 between the steps (IndentationShooting::
+  // assemble's `maxima`, about half of an evaluation); the state found is assembled again with
+  // it when `reassemble` (the same integration: the same state), else the caller does so.
+  // (Under contact control the states always carry their maxima.)
+  void without_maxima(bool reassemble) {
+    maxima_ = false;
+    reassemble_ = reassemble;
+  }
 
   // From (f, p), or (q, p) under contact control.
   std::optional<ScaledSolution> solve(Configuration c, double depth, double f_or_q, double p) {
@@ -123,7 +129,11 @@ class DepthNewton {
   }
 
   // The solution passed Newton's test on both residuals (its own tolerance).
-  ScaledSolution accepted(ScaledSolution sol) const {
+  ScaledSolution accepted(ScaledSolution sol) {
+    if (!maxima_ && reassemble_ && control_ == DepthControl::Force) {
+      ++evaluations_;
+      sol = solver_.assemble(sol.configuration, sol.f, sol.parameter, record_);
+    }
     sol.status = Status::Converged;
     sol.message.clear();
     sol.evaluations = evaluations_;
@@ -134,7 +144,7 @@ class DepthNewton {
     ++evaluations_;
     const double p = floor_ + std::exp(x[1]);
     return control_ == DepthControl::Force
-               ? solver_.assemble(c, std::exp(x[0]), p, record_, part_one_maximum_)
+               ? solver_.assemble(c, std::exp(x[0]), p, record_ && maxima_, maxima_)
                : solver_.assemble_at_contact(c, p + std::exp(x[0]), p, record_);
   }
 
@@ -146,7 +156,8 @@ class DepthNewton {
   Eigen::Matrix2d jacobian_ = Eigen::Matrix2d::Zero();
   Eigen::PartialPivLU<Eigen::Matrix2d> lu_;
   bool have_jacobian_ = false;
-  bool part_one_maximum_ = true;
+  bool maxima_ = true;
+  bool reassemble_ = true;
   int evaluations_ = 0;  // of the current solve
 };
 

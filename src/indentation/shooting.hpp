@@ -95,11 +95,11 @@ class IndentationShooting {
   // The state of `configuration` at force f and parameter p, integrated once.  Its residual is
   // zero only at an equilibrium; status is Converged when it is within the shooting tolerance.
   // With `record`, Part I (and the parts in contact) are sampled.
-  // Without `part_one_maximum` Part I's largest I1 is not searched between its steps (sol.max_i1
-  // then holds the parts in contact only): for the iterations of a search that assembles its
-  // end again.
+  // Without `maxima` the largest I1 is not searched between the steps of Part I (nor of the
+  // parts in contact, where the contact model offers that): sol.max_i1 is then a lower bound,
+  // for the iterations of a search that assembles its end again.
   ScaledSolution assemble(Configuration c, double f, double p, bool record,
-                          bool part_one_maximum = true) const {
+                          bool maxima = true) const {
     ScaledSolution sol;
     sol.f = f;
     sol.parameter = p;
@@ -107,9 +107,13 @@ class IndentationShooting {
     sol.evaluations = 1;
     const auto st = contact_.free_start(c, f, p);
     if (!st) return outside_domain(std::move(sol));
-    if (!run_free_part(*st, record, sol, part_one_maximum) ||
-        !contact_.attach(c, *st, p, record, sol))
-      return sol;
+    if (!run_free_part(*st, record, sol, maxima)) return sol;
+    bool attached;
+    if constexpr (requires { contact_.attach(c, *st, p, record, sol, maxima); })
+      attached = contact_.attach(c, *st, p, record, sol, maxima);
+    else
+      attached = contact_.attach(c, *st, p, record, sol);
+    if (!attached) return sol;
     return judged(std::move(sol));
   }
 
@@ -360,7 +364,7 @@ class IndentationShooting {
     const double p = floor + (near.parameter - floor) * std::pow(ratio, p_power);
     if (!(p > floor)) return std::nullopt;
     DepthNewton<IndentationShooting> newton(*this, settings().shooting_tol);
-    newton.skip_part_one_maximum();  // the state found is assembled again below
+    newton.without_maxima(false);  // the state found is assembled again below
     const auto found = newton.solve(c, d, near.f * std::pow(ratio, power(kFirstPower, force)), p);
     if (!found || !(std::abs(found->depth - d) <= kDepthPolish * d)) return std::nullopt;
     auto residual_at = [&](Configuration cc, double q) { return residual(cc, found->f, q); };

@@ -60,6 +60,7 @@ class InteriorMaximum {
   }
 
   Maximum sampled() const { return {best_value_, best_r_, best_state_}; }
+  bool observed() const { return has_last_; }
 
  private:
   double best_value_ = -std::numeric_limits<double>::infinity();

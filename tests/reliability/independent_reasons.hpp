@@ -40,14 +40,14 @@ inline std::optional<double> stage_end_force_n(const Problem& p, Stage stage) {
 // Reasons without an independent criterion here (limit loads, locking) pass.
 inline std::string unconfirmed_reason(const Problem& p, const PuncturePrediction& at) {
   const bool not_reached = at.status == Status::NotReached;
-  const bool wraps = at.status == Status::StickWrapsSide ||
-                     at.message.find("wrap its side") != std::string::npos;
+  const bool wraps =
+      at.status == Status::StickWrapsSide || at.message.find("wrap its side") != std::string::npos;
   if (!not_reached && !wraps) return {};
-  const Stage stage =
-      at.message.find("in the stick stage") != std::string::npos ||
-              at.status == Status::StickWrapsSide || p.stick.rule == StickRule::Always
-          ? Stage::Stick
-          : Stage::Slip;
+  const Stage stage = at.message.find("in the stick stage") != std::string::npos ||
+                              at.status == Status::StickWrapsSide ||
+                              p.stick.rule == StickRule::Always
+                          ? Stage::Stick
+                          : Stage::Slip;
   const auto end = stage_end_force_n(p, stage);
   if (!end) return "the stage's states do not end";
   SolverOptions options;

@@ -1,9 +1,8 @@
 // The reliability sweep: seeded random membranes over the documented ranges through the library.
 // Every result is a converged state with finite numbers or a failure with a kind and a reason,
-// checked independently where a criterion exists; the counts by outcome are printed.  PUNCTURE_RELIABILITY_CASES sets the number of membranes.
+// checked independently where a criterion exists; the counts by outcome are printed.
+// PUNCTURE_RELIABILITY_CASES sets the number of membranes.
 #include "random_membranes.hpp"
-
-#include "independent_reasons.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -13,6 +12,7 @@
 #include <map>
 #include <string>
 
+#include "independent_reasons.hpp"
 #include "puncture/loading_curve.hpp"
 
 namespace puncture::test {
@@ -68,8 +68,11 @@ TEST(Reliability, RandomMembranesGiveAStateOrAPhysicalReason) {
     ++counts[to_token(at.failure_kind()) + " | " + reason(at)];
     if (const std::string why = unconfirmed_reason(p, at); !why.empty()) {
       ++unconfirmed;
-      fmt::print("unconfirmed physical reason, case {} ({}): {}\n  {}\n", k, why,
-                 summary_of(p), at.message);
+      fmt::print("unconfirmed physical reason, case {} ({}): {}\n  {}\n",
+                 k,
+                 why,
+                 summary_of(p),
+                 at.message);
     }
     if (at.failure_kind() == FailureKind::Numerical) {
       ++numerical;

@@ -130,8 +130,10 @@ class FlatPunchContact {
 
   // Parts III and II once Part I is integrated from `st`: the corner, Part III's stretch and, with
   // Part II, its march down the side to where the capstan condition with Part III holds.
-  bool attach(Configuration c, const FreeStart& st, double p, bool record,
-              ScaledSolution& sol) const {
+  // Without `maxima` the side's largest I1 is not searched between the steps (the corner's is
+  // kept): for the iterations of a search that assembles its end again.
+  bool attach(Configuration c, const FreeStart& st, double p, bool record, ScaledSolution& sol,
+              bool maxima = true) const {
     if (c == Configuration::Stick) {
       sol.r_corner = s_.a;
       return true;
@@ -236,6 +238,7 @@ class FlatPunchContact {
     const PartTwoState corner = *corner_state;
     // The last step, down to the corner, may hold the side's largest I1.
     side_max.observe(r_corner, corner, first_invariant(corner[0], s_.a / r_corner));
+    if (!maxima) side_max = InteriorMaximum<PartTwoState>{};
     if (record) {
       knots.add(r_corner, corner);
       sol.part_two.clear();
@@ -666,10 +669,12 @@ class FlatPunchContact {
       }
     };
     track(r_corner, first_invariant(corner[0], s_.a / r_corner));
-    const auto side_peak = refined_maximum(side_max, side, [&](double r, const PartTwoState& y) {
-      return first_invariant(y[0], s_.a / r);
-    });
-    track(side_peak.r, side_peak.value);
+    if (side_max.observed()) {
+      const auto side_peak = refined_maximum(side_max, side, [&](double r, const PartTwoState& y) {
+        return first_invariant(y[0], s_.a / r);
+      });
+      track(side_peak.r, side_peak.value);
+    }
     sol.r_corner = r_corner;
     sol.part_three_stretch = s_.a / r_corner;
     sol.part_two_length = corner[1];
