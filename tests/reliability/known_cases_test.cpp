@@ -54,6 +54,22 @@ TEST(KnownCases, SoftLawPastItsPunctureKeepsTheSearchInRange) {
   EXPECT_LE(at.state.clamp_residual, 1e-10);
 }
 
+// Mooney-Rivlin membranes sliding with mu' ~ 10 (a capstan factor of ~5e6) after a stick stage:
+// the corner of Part II, located to ulps, was rejected because its capstan gap (a difference of
+// two stresses of ~5e6 s_eq) kept ~1e-8 of them in rounding, and reported as "beyond the
+// material's locking limit" although Mooney-Rivlin does not lock; the search took the first such
+// force for the end of the states.  The independent check of the sweep (a state exists beyond
+// that end; for 1904 the largest I1 there passes the critical value) found them.  Now the
+// puncture is where the largest I1 is the critical one.
+TEST(KnownCases, HighFrictionCornerIsLocatedToRounding) {
+  for (const int k : {1904, 2007, 3189}) {
+    const Problem p = random_membrane(kSeed, k);
+    const PuncturePrediction at = predict_puncture(p);
+    ASSERT_TRUE(at.ok()) << k << ": " << at.message;
+    EXPECT_NEAR(at.state.max_first_invariant / p.critical_i1, 1.0, 1e-6) << k;
+  }
+}
+
 // Held until a depth of 12.84 mm that the held branch does not reach: it ends (vertical exit)
 // shallower, a physical answer, not "neither the force search nor depth control reaches it".
 TEST(KnownCases, HeldDepthBeyondTheBranchEndWrapsTheSide) {
