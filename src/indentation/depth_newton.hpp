@@ -5,7 +5,7 @@
 // depth, so relative steps suit them), with residuals (clamp condition, depth), one integration per
 // iteration.  The Jacobian is taken by finite differences, then kept up to date by Broyden's
 // update from iteration to iteration and from point to point along a loading curve, and taken
-// afresh only when a step does not halve the residual: a point started from a good
+// afresh only when a step shrinks the residual by less than a fifth: a point started from a good
 // extrapolation of the previous ones costs two or three integrations.  Used for speed only: any
 // failure falls back to the bracketing solver (IndentationShooting::solve_at_depth).
 #include <Eigen/Dense>
@@ -86,7 +86,7 @@ class DepthNewton {
       if (!next.integrated) return std::nullopt;
       const Eigen::Vector2d r_next = value(next);
       // Broyden's update keeps the Jacobian in step along the iterations and the curve at no
-      // cost; a step that does not even halve the residual means it is too stale (or the
+      // cost; a step that shrinks the residual by less than a fifth means it is too stale (or the
       // curvature strong): a fresh one is taken where we now are.
       const Eigen::Vector2d dx = scale * step;
       jacobian_ += (r_next - r - jacobian_ * dx) * dx.transpose() / dx.squaredNorm();
@@ -107,7 +107,7 @@ class DepthNewton {
  private:
   static constexpr int kMaxIterations = 10;
   static constexpr double kLogStep = 1e-5;
-  static constexpr double kRefreshContraction = 0.5;
+  static constexpr double kRefreshContraction = 0.8;
 
   bool finite_difference_jacobian(Configuration c, const Eigen::Vector2d& x,
                                   const Eigen::Vector2d& r, double depth) {
