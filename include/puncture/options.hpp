@@ -13,8 +13,9 @@ struct SolverOptions {
   double shooting_tol = 1e-10;        // clamp residual |lambda2(A) - 1| accepted by the shooting
   double curve_tol = 1e-9;            // loading-curve points: Newton stops when the clamp residual
                                       // and the relative depth residual are below this
-  int field_points = 200;             // fields: Part I (and Part II) sampled at this many
-                                      // intervals, evenly spaced in the reference radius
+  int field_points = 200;             // fields: an indentation's Part I (and Part II) sampled
+                                      // at this many intervals evenly spaced in the reference
+                                      // radius; an inflation's membrane at least this many
   int max_shooting_iterations = 100;  // per boundary-value solve
   int max_steps = 100000;             // integration steps per part before giving up
   bool record_fields = true;          // fill Equilibrium::fields (off in inner loops)

@@ -18,7 +18,7 @@ struct ShootingSettings {
   IntegrationSettings integration;
   double shooting_tol;
   int max_iterations;
-  int field_points;  // at least this many Part I samples in recorded solutions
+  int field_points;  // intervals between the samples of a recorded part (even_samples)
 };
 
 // Part I sample: R, t, lambda1, lambda2, h.  Part II sample: R, lambda1, y.
