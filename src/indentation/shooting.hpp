@@ -41,8 +41,8 @@ class IndentationShooting {
 
   // The equilibrium at force f in `stage` (the contact model picks the configuration); without
   // `record` its fields are not sampled.  `rough`: the root of the coarse integration alone,
-  // integrated finely once (its clamp residual ~1e-7, so usually judged not converged: rough()),
-  // for the steps of a search that polishes its own end.
+  // integrated finely once (its clamp residual ~1e-7, so usually judged not converged), for the
+  // steps of a search that polishes its own end.
   ScaledSolution solve(Stage stage, double f, bool record = true, bool rough = false) const {
     if (f == 0.0) return contact_.unloaded(record_unloaded_);
     ScaledSolution sol;
@@ -245,8 +245,9 @@ class IndentationShooting {
   // ... and one further away than this is brought to it in depth control (refine_at_depth).
   static constexpr double kDepthPolish = 1e-9;
 
-  // The equilibrium at normalised depth d in `stage`: the force bracketed from zero (a search
-  // over solve(); the loading curve uses the faster DepthNewton and falls back on this).
+  // The equilibrium at normalised depth d in `stage`: by Newton in depth control from a nearby
+  // force solve (newton_at_depth), or, where that fails, with the force bracketed from zero (a
+  // search over solve(); the loading curve's own DepthNewton falls back on this too).
   ScaledSolution solve_at_depth(Stage stage, double d, double f_guess = 0.0) const {
     if (d == 0.0) return solve(stage, 0.0);
     if (auto fast = newton_at_depth(stage, d, f_guess)) return std::move(*fast);
