@@ -120,10 +120,9 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   // Set when the membrane punctures as it starts sliding although no sliding state at the switch
   // is reached: the depth at which the sliding membrane reaches the criterion.
   std::optional<double> sliding_criterion_depth_mm;
-  // The sliding state at the switch when the jump to sliding fails the membrane.
-  std::optional<ScaledSolution> sliding_at_switch;
-  // The state of the contact model's direct puncture solve, when it is the puncture.
-  std::optional<ScaledSolution> direct_state;
+  // The puncture state when a search found it already: the sliding state at the switch when the
+  // jump to sliding fails the membrane, or the contact model's direct puncture solve.
+  std::optional<ScaledSolution> found;
   Stage stage = Stage::Slip;
   double slip_from_f = 0.0, slip_from_g = unloaded_excess(criterion);
   if (boundary.first_stage == Stage::Stick) {
@@ -172,7 +171,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
           // tolerance), however fast the depth runs away from the force.
           const auto refined =
               shooting.refine_at_depth(s, boundary.depth_mm / big_a, options.curve_tol, true);
-          sliding_at_switch = refined ? *refined : s;
+          found = refined ? *refined : s;
         }
       }
     }
@@ -186,12 +185,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
         i1c ? shooting.contact().direct_puncture(shooting, *i1c) : std::optional<ScaledSolution>();
     if (direct && direct->f >= slip_from_f) {
       f_puncture = direct->f;
-      // The direct solve's state is the puncture state: sampled by the same integration.
-      direct_state =
-          direct->part_one.empty()
-              ? shooting.assemble(direct->configuration, direct->f, direct->parameter, true)
-              : *direct;
-      if (!direct_state->ok()) direct_state.reset();
+      found = *direct;
     } else
       f_puncture =
           first_force_where(shooting, Stage::Slip, slip_from_f, slip_from_g, over_critical);
@@ -203,9 +197,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
         critical_value(criterion));
     return out;
   }
-  auto sol = sliding_at_switch ? *sliding_at_switch
-             : direct_state    ? *direct_state
-                               : shooting.solve(stage, *f_puncture);
+  auto sol = found ? *found : shooting.solve(stage, *f_puncture);
   // A search that closes on the end of the stage's solutions brackets it to a few ulps and may
   // return the side beyond (no state): the last state is an ulp or two below.
   for (int k = 0; k < 16 && !sol.ok() && failure_kind(sol.status) == FailureKind::Physical; ++k) {

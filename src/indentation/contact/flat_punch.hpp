@@ -412,9 +412,10 @@ class FlatPunchContact {
 
   // Puncture in the slip stage with Part II and the crack at the corner, where I1 = i1c.  There
   // the corner's state is fixed by the capstan condition and I1 = i1c alone, whatever the force,
-  // so marching Part II up from it to where R s1 = f and shooting Part I on to the clamp leaves
-  // a one-parameter shooting in f.  Empty when the puncture is not of that kind (the caller then
-  // searches the loading path).
+  // so marching Part II up from it to a top stretch p (the force an output) and shooting Part I
+  // on to the clamp leaves a one-parameter shooting in p.  The state is returned with its fields
+  // sampled.  Empty when the puncture is not of that kind (the caller then searches the loading
+  // path).
   template <class Shooting>
   std::optional<ScaledSolution> direct_puncture(const Shooting& shooting, double i1c) const {
     const double capstan = std::exp(s_.mu * kHalfPi);
@@ -459,7 +460,8 @@ class FlatPunchContact {
       return up ? shooting.coarse_free_residual(up->f, up->start) : std::nullopt;
     };
     // The top at the clamp may lie past locking (a long Part II): tops from l3 downward,
-    // a + (l3 - a) / 2^k, until the residual is negative (as side_bracket_start).
+    // a + (l3 - a) / 2^k, until the residual is negative (as side_bracket_start does when its
+    // floor fails).
     const double hi = *l3 * (1.0 - 1e-9);
     double lo = hi;
     std::optional<double> g_lo;
@@ -480,8 +482,7 @@ class FlatPunchContact {
     if (!top) return std::nullopt;
     const auto up = side_from_corner(*l3, *top, fine, none);
     if (!up) return std::nullopt;
-    const auto f = std::optional<double>(up->f);
-    auto sol = shooting.assemble(Configuration::SlipWithPartTwo, *f, *top, false);
+    auto sol = shooting.assemble(Configuration::SlipWithPartTwo, up->f, *top, true);
     // The march down must find the same corner, and the crack must sit there.
     if (!sol.ok() || std::abs(sol.part_three_stretch - *l3) > 1e-7 * *l3 ||
         std::abs(max_first_invariant_of(sol) - i1c) > 1e-7 * i1c)
