@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -243,16 +244,24 @@ StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState&
       previous.part_two
           ? (previous.part_two_top_reference_radius_mm - previous.corner_reference_radius_mm) / A
           : 1e-3 * corner;
-  // Starting values for every side length: the nodes sit at the same places along the parts.
-  Eigen::VectorXd x =
-      starting_guess(build_mesh(Layout::SlipWithSide, s, options, length), s, &previous, A);
+  // Each side length starts from the latest state at this depth (the previous depth's at
+  // first), material point by material point: a node keeps the position its reference radius
+  // had.  Near locking that start can lock where the free part leaves the side (its first,
+  // shortest element meets a kink); then the nodes keep the latest solution's positions
+  // instead, which rescales the side's stretches by the change of its length but keeps the
+  // free part smooth.  Each start alone fails somewhere near locking; together they follow
+  // the paper's membrane to within 1e-2 of Gent's locking.
+  std::optional<FeState> latest;
+  Eigen::VectorXd latest_x;
   StepResult last;
   auto slope_at = [&](double length) {
     const Mesh mesh = build_mesh(Layout::SlipWithSide, s, options, length);
-    Eigen::VectorXd trial = x;
-    last = minimise(problem, mesh, s, trial, contact, options);
+    Eigen::VectorXd x = starting_guess(mesh, s, latest ? &*latest : &previous, A);
+    if (latest && !std::isfinite(fe::total_energy(problem.material.law, mesh, x))) x = latest_x;
+    last = minimise(problem, mesh, s, x, contact, options);
     if (!last.ok()) throw std::runtime_error(last.message);
-    x = trial;
+    latest = last.state;
+    latest_x = x;
     return corner_radial_slope(last.state);
   };
   try {
@@ -271,19 +280,22 @@ StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState&
       }
     }
     double lo = length, hi = length, slope_lo = slope, slope_hi = slope;
+    double force_lo = last.state.normalized_force, force_hi = force_lo;
     // Bracket the tangential departure by growing or shrinking the side's length in steps small
     // enough for the last solution to start the next.
     constexpr double factor = 1.25;
     for (int k = 0; k < 200 && (slope_lo >= 0.0 || slope_hi <= 0.0); ++k) {
       if (slope_hi <= 0.0) {
-        lo = hi, slope_lo = slope_hi;
+        lo = hi, slope_lo = slope_hi, force_lo = force_hi;
         hi *= factor;
         slope_hi = slope_at(hi);
+        force_hi = last.state.normalized_force;
       } else {
-        hi = lo, slope_hi = slope_lo;
+        hi = lo, slope_hi = slope_lo, force_hi = force_lo;
         lo /= factor;
         if (lo < 1e-12 * corner) break;
         slope_lo = slope_at(lo);
+        force_lo = last.state.normalized_force;
       }
     }
     if (!(slope_lo < 0.0 && slope_hi > 0.0)) {
@@ -292,18 +304,44 @@ StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState&
       return none;
     }
     // The force is stationary (a maximum) in the side's length at the answer (see above): Brent
-    // finds it near the bracket, and the force there is insensitive to the length's error.
-    boost::uintmax_t iterations = 200;
-    const auto best = boost::math::tools::brent_find_minima(
-        [&](double length) {
-          slope_at(length);
-          return -last.state.normalized_force;
-        },
-        lo / factor,
-        hi * factor,
-        20,  // bits: L to ~1e-6 relative, the force (stationary) to ~1e-12
-        iterations);
-    slope_at(best.first);
+    // finds it near the tangency, and the force there is insensitive to the length's error.
+    // The discrete maximum and the discrete tangency differ by O(h) (0.1 % at 128 elements,
+    // more on coarse meshes), so the search starts in a window of +-10 % around the tangency,
+    // located by TOMS 748, and moves the window on while the maximum sits at its edge.  A
+    // window as wide as the bracket is not safe near locking: there the force rises again at
+    // lengths ~1.5 times the answer, where the side would pull the free part onto itself
+    // (dr/dR > 0 at the top), and can exceed the maximum.
+    boost::uintmax_t root_iterations = 50;
+    const auto tangency =
+        boost::math::tools::toms748_solve(slope_at,
+                                          lo,
+                                          hi,
+                                          slope_lo,
+                                          slope_hi,
+                                          boost::math::tools::eps_tolerance<double>(10),
+                                          root_iterations);
+    const double around = 0.5 * (tangency.first + tangency.second);
+    double from = around / 1.1, to = around * 1.1, best = around;
+    for (int moves = 0; moves < 10; ++moves) {
+      boost::uintmax_t iterations = 200;
+      best = boost::math::tools::brent_find_minima(
+                 [&](double length) {
+                   slope_at(length);
+                   return -last.state.normalized_force;
+                 },
+                 from,
+                 to,
+                 20,  // bits: L to ~1e-6 relative, the force (stationary) to ~1e-12
+                 iterations)
+                 .first;
+      if (best > to / 1.001)
+        from = to / 1.01, to *= 1.1;
+      else if (best < from * 1.001)
+        to = from * 1.01, from /= 1.1;
+      else
+        break;
+    }
+    slope_at(best);
   } catch (const std::runtime_error& e) {
     StepResult failed;
     failed.message = e.what();

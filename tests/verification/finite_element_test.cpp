@@ -236,6 +236,50 @@ TEST(FiniteElementClosedForm, FrictionlessNeoHookeanForceSaturatesAtTwoPiGHa) {
   EXPECT_GT(states.back().force_n / saturation, 1.0 - 1e-4);
 }
 
+// Near Gent's locking: a stiff membrane (J_lim = 20, locking at I1 = 23) indented to within 2 %
+// of J_lim of its locking, and the paper's membrane (J_lim = 125) frictionless to I1 = 114.6,
+// past where the side's guesses once locked (40 mm).  The elements still converge at their
+// order and reproduce the shooting.  Measured (relative force difference; 64, 128 elements):
+// held, 100 mm, I1 22.64: 1.45e-6, 9.1e-8; frictionless, 90 mm, I1 22.67: 4.64e-6, 2.81e-7;
+// paper's membrane, 60 mm: 128 elements 1.40e-7.  The earlier code failed at the paper's 40 mm
+// (a start beyond locking) and settled at 90 mm on a side ~1.5 times too long, 2.5e-6 off at
+// every mesh.
+TEST(FiniteElementNearLocking, FollowsGentToWithinTwoPercentOfItsLocking) {
+  struct Near {
+    FeContact contact;
+    double j_lim, depth_mm;
+    double gap_below;  // (3 + J_lim - I1) / J_lim of the shooting's state is below this
+  };
+  for (const Near& c : {Near{FeContact::Held, 20.0, 100.0, 0.02},
+                        Near{FeContact::Frictionless, 20.0, 90.0, 0.02}}) {
+    Problem p = problem_for(2.0, Gent{c.j_lim}, c.contact);
+    p.critical_i1 = 22.0;
+    const Equilibrium shooting = solve_at_depth(p, c.depth_mm, stage_of(c.contact));
+    ASSERT_TRUE(shooting.ok()) << shooting.message;
+    EXPECT_LT((3.0 + c.j_lim - shooting.max_first_invariant) / c.j_lim, c.gap_below);
+    std::vector<double> errors;
+    for (int elements : {64, 128}) {
+      FeOptions options;
+      options.elements = elements;
+      const FeState fe = fe_solve_at_depth(p, c.depth_mm, c.contact, options);
+      ASSERT_TRUE(fe.ok()) << to_string(c.contact) << ", " << elements << ": " << fe.message;
+      errors.push_back(std::abs(fe.force_n / shooting.force_n - 1.0));
+    }
+    // Quadratic elements: h^4, a ratio of 16 (measured 16.0 held, 16.5 frictionless).
+    EXPECT_GT(errors[0] / errors[1], 10.0) << to_string(c.contact);
+    EXPECT_LT(errors[1], 5e-7) << to_string(c.contact);
+  }
+  const Problem paper = problem_for(2.0, Gent{125.0}, FeContact::Frictionless);
+  const Equilibrium deep = solve_at_depth(paper, 60.0, Stage::Slip);
+  ASSERT_TRUE(deep.ok()) << deep.message;
+  EXPECT_GT(deep.max_first_invariant, 114.0);
+  FeOptions options;
+  options.elements = 128;
+  const FeState fe = fe_solve_at_depth(paper, 60.0, FeContact::Frictionless, options);
+  ASSERT_TRUE(fe.ok()) << fe.message;
+  EXPECT_NEAR(fe.force_n / deep.force_n, 1.0, 5e-7);
+}
+
 TEST(FiniteElementInput, RejectsInvalidOptionsAndDepths) {
   const Problem p;
   FeOptions bad_order;
