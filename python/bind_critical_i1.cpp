@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bind_calibration.hpp"
+#include "bindings.hpp"
 #include "puncture/calibration.hpp"
 #include "puncture/csv.hpp"
 
@@ -55,6 +56,16 @@ std::vector<BurstTest> burst_tests_from_csv(const std::string& path,
   });
 }
 
+// With the membrane's law when given; a state the shooting does not find raises SolverError.
+CriticalI1Estimate estimate(const std::vector<BurstTest>& tests,
+                            const std::optional<MaterialLaw>& law) {
+  auto e = as_value_error([&] {
+    return law ? critical_i1_from_inflation(tests, *law) : critical_i1_from_inflation(tests);
+  });
+  if (!e.ok()) raise_solver_error(e.status, e.message, "critical I1: " + e.message);
+  return e;
+}
+
 }  // namespace
 
 void bind_critical_i1(py::module_& m) {
@@ -72,7 +83,7 @@ void bind_critical_i1(py::module_& m) {
                            t.burst_radius_mm);
       });
 
-  py::class_<CriticalI1Estimate>(
+  py::class_<CriticalI1Estimate, Outcome>(
       m, "CriticalI1Estimate", "Critical I1 from inflation tests: the mean of the per-test I1")
       .def_property_readonly(
           "stretches",
@@ -85,7 +96,22 @@ void bind_critical_i1(py::module_& m) {
           [](py::object self) {
             return view(self.cast<const CriticalI1Estimate&>().first_invariants, self);
           },
-          "per test: 2 lambda^2 + lambda^-4")
+          "per test: the membrane's largest I1 (the pole's without a law)")
+      .def_property_readonly(
+          "pole_first_invariants",
+          [](py::object self) {
+            return view(self.cast<const CriticalI1Estimate&>().pole_first_invariants, self);
+          },
+          "per test: 2 lambda^2 + lambda^-4, I1 at the pole")
+      .def_property_readonly(
+          "largest_i1_radius_fractions",
+          [](py::object self) {
+            return view(self.cast<const CriticalI1Estimate&>().largest_i1_radius_fractions, self);
+          },
+          "per test: where the largest I1 lies, R / A (0: the pole)")
+      .def_readonly("from_membrane",
+                    &CriticalI1Estimate::from_membrane,
+                    "True when a law's inflated membrane was solved")
       .def_readonly("mean", &CriticalI1Estimate::mean, "the critical I1")
       .def_readonly("standard_deviation",
                     &CriticalI1Estimate::standard_deviation,
@@ -113,22 +139,28 @@ void bind_critical_i1(py::module_& m) {
       "The equibiaxial stretch >= 1 whose I1 is i1 (>= 3)");
   m.def(
       "critical_i1_from_inflation",
-      [](const std::vector<BurstTest>& tests) {
-        return as_value_error([&] { return critical_i1_from_inflation(tests); });
+      [](const std::vector<BurstTest>& tests, const std::optional<MaterialLaw>& law) {
+        return estimate(tests, law);
       },
       py::arg("tests"),
-      "Critical I1 from inflation tests (paper §2.3), a list of BurstTest.");
+      py::arg("law") = py::none(),
+      "Critical I1 from inflation tests (paper §2.3), a list of BurstTest.  With a law\n"
+      "(Gent, NeoHookean, MooneyRivlin) each test's I1 is the largest of that membrane\n"
+      "inflated until its pole is stretched as the mark; without, the pole's (the paper's).");
   m.def(
       "critical_i1_from_inflation",
-      [](const py::array_t<double, py::array::forcecast>& burst_radii_mm, double mark_radius_mm) {
-        const auto tests =
-            tests_from_radii(to_vector(burst_radii_mm, "burst_radii_mm"), mark_radius_mm);
-        return as_value_error([&] { return critical_i1_from_inflation(tests); });
+      [](const py::array_t<double, py::array::forcecast>& burst_radii_mm,
+         double mark_radius_mm,
+         const std::optional<MaterialLaw>& law) {
+        return estimate(
+            tests_from_radii(to_vector(burst_radii_mm, "burst_radii_mm"), mark_radius_mm), law);
       },
       py::arg("burst_radii_mm"),
       py::arg("mark_radius_mm"),
+      py::arg("law") = py::none(),
       "Critical I1 from the mark's radii at burst [mm] and its initial radius [mm], as the\n"
-      "CLI's --burst-radii and --mark-radius.");
+      "CLI's --burst-radii and --mark-radius (law: as above; the CLI's default is the\n"
+      "paper's Gent, its --pole-only is law=None).");
   m.def("burst_tests_from_csv",
         &burst_tests_from_csv,
         py::arg("path"),

@@ -17,6 +17,7 @@ namespace puncture::cli {
 struct CriticalI1Report {
   std::string source;  // "--burst-radii" or the CSV file
   std::vector<BurstTest> tests;
+  std::optional<MaterialLaw> law;  // the membrane solved; none: the pole's I1 (--pole-only)
   CriticalI1Estimate estimate;
 };
 

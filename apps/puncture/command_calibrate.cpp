@@ -39,7 +39,11 @@ void require_finite(double value, const char* flag, const char* range, bool ok) 
   throw InputError(prefix ? fmt::format("{}: {}", prefix, e.what()) : std::string(e.what()));
 }
 
-std::string run_critical_i1(const CalibrationFlags& f, Format format) {
+std::string run_critical_i1(const CLI::App& app, const ProblemFlags& pf, const CalibrationFlags& f,
+                            Format format) {
+  if (given(app, "--critical-i1"))
+    throw InputError(
+        "--critical-i1: `calibrate critical-i1` determines the critical I1; do not give it");
   CriticalI1Report report;
   const std::optional<double> mark =
       f.mark_radius_option->count() > 0 ? std::optional<double>(f.mark_radius_mm) : std::nullopt;
@@ -88,10 +92,13 @@ std::string run_critical_i1(const CalibrationFlags& f, Format format) {
     }
   }
   try {
-    report.estimate = critical_i1_from_inflation(report.tests);
+    if (!f.pole_only) report.law = make_law(pf);
+    report.estimate = report.law ? critical_i1_from_inflation(report.tests, *report.law)
+                                 : critical_i1_from_inflation(report.tests);
   } catch (const std::invalid_argument& e) {
     rethrow_as_input(e);
   }
+  if (!report.estimate.ok()) throw SolveError(report.estimate.message, report.estimate.status);
   return calibration_text(report, format);
 }
 
@@ -325,13 +332,20 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
   f.critical_i1 = f.calibrate->add_subcommand(
       "critical-i1",
       "Critical I1 from inflation (bulge) tests (paper §2.3): the mark at the\n"
-      "membrane's centre is stretched equibiaxially, lambda = burst radius /\n"
-      "initial radius, I1 = 2 lambda^2 + lambda^-4; mean and sample sd over tests");
+      "membrane's centre (the pole) is stretched equibiaxially, lambda = burst\n"
+      "radius / initial radius.  Each test's critical I1 is the largest I1 of the\n"
+      "membrane (the --material law) inflated until its pole is stretched so: for\n"
+      "Gent and neo-Hookean it is the pole's, 2 lambda^2 + lambda^-4 (the paper's),\n"
+      "for Mooney-Rivlin it lies near the clamp.  Mean and sample sd over tests");
   f.critical_i1->footer(
+      "The result does not depend on the clamp radius, thickness or modulus; --critical-i1\n"
+      "is what is calibrated and must not be given.\n"
       "Examples:\n"
       "  puncture calibrate critical-i1 --mark-radius 0.5 --burst-radii 3.39,3.45,3.46,3.55\n"
       "  puncture calibrate critical-i1 bursts.csv      (columns burst_radius_mm and\n"
-      "                                                  initial_radius_mm, or --mark-radius)");
+      "                                                  initial_radius_mm, or --mark-radius)\n"
+      "  puncture calibrate critical-i1 --material mooney-rivlin --mr-alpha 0.1 \\\n"
+      "      --mark-radius 0.5 --burst-radii 3.2      (its burst starts near the clamp)");
   f.mark_radius_option =
       f.critical_i1
           ->add_option("--mark-radius",
@@ -355,6 +369,12 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
                    ->type_name("FILE")
                    ->group("Inflation tests");
   radii->excludes(file);
+  f.critical_i1
+      ->add_flag("--pole-only",
+                 f.pole_only,
+                 "The paper's estimate: I1 at the pole, 2 lambda^2 + lambda^-4, whatever\n"
+                 "the law (no membrane is solved)")
+      ->group("Inflation tests");
 
   f.friction = f.calibrate->add_subcommand(
       "friction",
@@ -500,7 +520,7 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
 
 std::string run_calibration(const CLI::App& app, const ProblemFlags& problem,
                             const CalibrationFlags& f, Format format) {
-  if (f.critical_i1->parsed()) return run_critical_i1(f, format);
+  if (f.critical_i1->parsed()) return run_critical_i1(app, problem, f, format);
   if (f.friction->parsed()) return run_friction(app, problem, f, format);
   if (f.jlim->parsed()) return run_jlim(app, problem, f, format);
   if (f.band->parsed()) return run_band(problem, f, format);

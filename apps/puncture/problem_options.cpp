@@ -158,6 +158,13 @@ Problem make_problem(const ProblemFlags& f, Unknown unknown) {
   return p;
 }
 
+MaterialLaw make_law(const ProblemFlags& f) {
+  std::vector<std::string> errors;
+  const MaterialLaw law = law_of(f, errors);
+  throw_if_invalid("invalid input:", errors, {});
+  return law;
+}
+
 InflationProblem make_inflation_problem(const ProblemFlags& f) {
   std::vector<std::string> errors;
   InflationProblem p;

@@ -41,4 +41,9 @@ Problem make_problem(const ProblemFlags& flags, Unknown unknown);
 // are not read).  Throws InputError like make_problem.
 InflationProblem make_inflation_problem(const ProblemFlags& flags);
 
+// The strain-energy law the material flags describe (--material, --jlim, --mr-alpha).  Throws
+// InputError for a flag that does not apply to the law; its parameters' ranges are the
+// library's to check.
+MaterialLaw make_law(const ProblemFlags& flags);
+
 }  // namespace puncture::cli

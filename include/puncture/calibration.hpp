@@ -17,6 +17,7 @@
 #include "puncture/csv.hpp"
 #include "puncture/kinematics.hpp"
 #include "puncture/loading_curve.hpp"
+#include "puncture/material.hpp"
 #include "puncture/outcome.hpp"
 #include "puncture/problem.hpp"
 
@@ -25,24 +26,40 @@ namespace puncture {
 // ---------------------------------------------------------------------------------------------
 // Critical I1 from inflation tests (§2.3).  At the pole of an inflated membrane the stretch is
 // equibiaxial, lambda = (radius of the mark at burst) / (its initial radius), and with
-// incompressibility I1 = 2 lambda^2 + lambda^-4.
+// incompressibility I1 = 2 lambda^2 + lambda^-4.  The paper takes that as the critical I1,
+// which assumes the burst starts at the pole.  Given the membrane's law, the membrane inflated
+// until its pole is stretched as the mark is solved instead, and each test's critical I1 is
+// its largest I1, wherever it lies: for Gent and neo-Hookean the pole's, for Mooney-Rivlin
+// near the clamp (docs/model.md §13.2, §14).
 
 struct BurstTest {
   double initial_radius_mm = 0.0;  // radius of the mark drawn on the flat membrane [mm]
   double burst_radius_mm = 0.0;    // its radius when the membrane bursts [mm]
 };
 
-struct CriticalI1Estimate {
-  std::vector<double> stretches;             // per test: burst radius / initial radius
-  std::vector<double> first_invariants;      // per test: 2 lambda^2 + lambda^-4
+struct CriticalI1Estimate : Outcome {         // NoConvergence when an inflated state was not found
+  std::vector<double> stretches;              // per test: burst radius / initial radius (pole)
+  std::vector<double> pole_first_invariants;  // per test: 2 lambda^2 + lambda^-4, at the pole
+  std::vector<double> first_invariants;       // per test: the largest I1 of the membrane
+  // Per test: where that largest I1 lies, its reference radius over the clamp radius (R / A,
+  // 0 = the pole).  Always 0 without the membrane's law.
+  std::vector<double> largest_i1_radius_fractions;
+  bool from_membrane = false;                // the membrane's law was solved (else the pole's I1)
   double mean = 0.0;                         // mean of the per-test I1: the critical I1
   std::optional<double> standard_deviation;  // sample standard deviation (n - 1); needs 2 tests
   std::optional<double> standard_error;      // of the mean, sd / sqrt(n)
 };
 
-// Throws std::invalid_argument naming the test when a radius is not a finite number > 0 or the
-// mark shrank (burst radius below the initial radius), or when there is no test.
+// The paper's estimate, I1 at the pole.  Throws std::invalid_argument naming the test when a
+// radius is not a finite number > 0 or the mark shrank (burst radius below the initial radius),
+// or when there is no test.
 CriticalI1Estimate critical_i1_from_inflation(const std::vector<BurstTest>& tests);
+// Each test's largest I1 over the membrane of `law` inflated until its pole stretch is the
+// mark's (the result does not depend on the clamp radius, thickness or modulus).  Throws as
+// above, and std::invalid_argument for an invalid law or a mark stretched at or beyond the
+// law's locking; a state the shooting does not find is a NoConvergence outcome naming the test.
+CriticalI1Estimate critical_i1_from_inflation(const std::vector<BurstTest>& tests,
+                                              const MaterialLaw& law);
 
 // The tests in a table with a column burst_radius_mm and either a column initial_radius_mm or,
 // for every test, `mark_radius_mm`.  Throws CsvError (a missing column; a radius <= 0 or a

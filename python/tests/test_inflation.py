@@ -179,3 +179,62 @@ def test_neo_hookean_limit_point_agrees_with_an_independent_solver():
     # h^2 P'''/(6 P'') ~ 1e-4 of the library's limit point.
     vertex = limit.pole_stretch + h * (at[0] - at[2]) / (2 * (at[0] - 2 * at[1] + at[2]))
     assert vertex == pytest.approx(limit.pole_stretch, abs=2e-4)
+
+
+def test_mooney_rivlin_burst_lies_near_the_clamp_by_an_independent_solver():
+    """Mooney-Rivlin (alpha = 0.1) bursts near the clamp, not at the pole: scipy's collocation
+    solver, on the normal-balance form of the equations and started from the library's fields,
+    agrees on the pressure of the library's burst state and on where its largest I1 lies; and
+    the law-aware calibration reads that burst's pole stretch back as the critical I1."""
+    integrate = pytest.importorskip("scipy.integrate")
+    alpha = 0.1
+    mr = pu.InflationProblem(material=pu.Material.mooney_rivlin(alpha=alpha))
+    state = pu.inflation_burst(mr).state
+    l0, A = state.pole_stretch, mr.clamp_radius_mm
+
+    def stresses(l1, l2):
+        return ((l1 - l1 ** -3 * l2 ** -2) * (1 - alpha + alpha * l2 * l2),
+                (l2 - l2 ** -3 * l1 ** -2) * (1 - alpha + alpha * l1 * l1))
+
+    def rhs(R, y, p):
+        l1, l2, phi = y
+        s1, s2 = stresses(l1, l2)
+        g = 1 - alpha + alpha * l2 * l2
+        a1 = (1 + 3 * l1 ** -4 * l2 ** -2) * g  # d s1 / d lambda1
+        a2 = 2 * l1 ** -3 * l2 ** -3 * g + (l1 - l1 ** -3 * l2 ** -2) * 2 * alpha * l2
+        dl2 = (l1 * np.cos(phi) - l2) / R
+        dl1 = (s2 * np.cos(phi) - s1 - R * a2 * dl2) / (R * a1)
+        dphi = (p[0] * l1 * l2 - s2 * np.sin(phi) / R) / s1
+        return np.vstack([dl1, dl2, dphi])
+
+    d = 1e-4  # the equibiaxial start off the pole, exact to O(d^2)
+
+    def bc(ya, yb, p):
+        s1, _ = stresses(ya[0], ya[1])
+        return np.array([ya[1] - l0, ya[0] - ya[1], ya[2] - p[0] * ya[1] ** 2 * d / (2 * s1),
+                         yb[1] - 1.0])
+
+    f = state.fields
+    Rf = np.asarray(f.reference_radius_mm) / A
+    R = np.concatenate([[d], np.linspace(0.002, 1.0, 2000)])
+    guess = np.vstack([np.interp(R, Rf, f.radial_stretch), np.interp(R, Rf, f.hoop_stretch),
+                       np.interp(R, Rf, f.slope_rad)])
+    sol = integrate.solve_bvp(rhs, bc, R, guess, p=[state.normalized_pressure], tol=1e-8,
+                              max_nodes=1000000)
+    assert sol.success, sol.message
+    # Measured: 1.2e-9 in pressure, 9.5e-9 in the largest I1, 2e-6 of A in where it lies.
+    assert sol.p[0] == pytest.approx(state.normalized_pressure, rel=1e-7)
+    fine = np.linspace(d, 1.0, 200001)
+    l1, l2, _ = sol.sol(fine)
+    i1 = l1 ** 2 + l2 ** 2 + (l1 * l2) ** -2
+    k = int(np.argmax(i1))
+    assert i1[k] == pytest.approx(state.max_first_invariant, rel=1e-7)
+    assert fine[k] == pytest.approx(state.max_first_invariant_reference_radius_mm / A, abs=1e-4)
+    assert i1[0] == pytest.approx(pu.equibiaxial_first_invariant(l0), rel=1e-7)
+    assert i1[0] < 84.0 < 95.0 < i1[k]  # the pole is far below the burst's I1
+
+    e = pu.critical_i1_from_inflation([0.5 * l0], 0.5, law=pu.MooneyRivlin(alpha))
+    assert e.from_membrane and e.mean == pytest.approx(mr.critical_i1, rel=1e-8)
+    assert e.largest_i1_radius_fractions[0] == pytest.approx(fine[k], abs=1e-4)
+    paper = pu.critical_i1_from_inflation([0.5 * l0], 0.5)
+    assert not paper.from_membrane and paper.mean == pytest.approx(i1[0], rel=1e-7)

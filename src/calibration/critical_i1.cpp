@@ -1,18 +1,23 @@
 // Critical I1 from the marks of inflation tests at burst (paper §2.3).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <stdexcept>
 
 #include "puncture/calibration.hpp"
+#include "puncture/inflation.hpp"
 
 namespace puncture {
 
-CriticalI1Estimate critical_i1_from_inflation(const std::vector<BurstTest>& tests) {
+namespace {
+
+// The pole stretch of each test, checked.
+std::vector<double> pole_stretches(const std::vector<BurstTest>& tests) {
   if (tests.empty())
     throw std::invalid_argument("critical I1: at least one inflation test is needed, got none");
-  CriticalI1Estimate out;
+  std::vector<double> stretches;
   for (std::size_t i = 0; i < tests.size(); ++i) {
     const auto& t = tests[i];
     for (const auto& [name, value] : {std::pair{"initial radius", t.initial_radius_mm},
@@ -27,20 +32,82 @@ CriticalI1Estimate critical_i1_from_inflation(const std::vector<BurstTest>& test
                       i + 1,
                       t.burst_radius_mm,
                       t.initial_radius_mm));
-    const double stretch = t.burst_radius_mm / t.initial_radius_mm;
-    out.stretches.push_back(stretch);
-    out.first_invariants.push_back(equibiaxial_first_invariant(stretch));
+    stretches.push_back(t.burst_radius_mm / t.initial_radius_mm);
   }
-  const auto n = static_cast<double>(tests.size());
+  return stretches;
+}
+
+// Mean, and with two tests or more the sample standard deviation and the standard error.
+void summarise(CriticalI1Estimate& out) {
+  const auto n = static_cast<double>(out.first_invariants.size());
   double sum = 0.0;
   for (const double i1 : out.first_invariants) sum += i1;
   out.mean = sum / n;
-  if (tests.size() >= 2) {
+  if (out.first_invariants.size() >= 2) {
     double ss = 0.0;
     for (const double i1 : out.first_invariants) ss += (i1 - out.mean) * (i1 - out.mean);
     out.standard_deviation = std::sqrt(ss / (n - 1.0));
     out.standard_error = *out.standard_deviation / std::sqrt(n);
   }
+}
+
+}  // namespace
+
+CriticalI1Estimate critical_i1_from_inflation(const std::vector<BurstTest>& tests) {
+  CriticalI1Estimate out;
+  out.status = Status::Converged;
+  out.stretches = pole_stretches(tests);
+  for (const double stretch : out.stretches) {
+    out.pole_first_invariants.push_back(equibiaxial_first_invariant(stretch));
+    out.largest_i1_radius_fractions.push_back(0.0);
+  }
+  out.first_invariants = out.pole_first_invariants;
+  summarise(out);
+  return out;
+}
+
+CriticalI1Estimate critical_i1_from_inflation(const std::vector<BurstTest>& tests,
+                                              const MaterialLaw& law) {
+  CriticalI1Estimate out;
+  out.stretches = pole_stretches(tests);
+  out.from_membrane = true;
+  InflationProblem membrane;
+  membrane.material.law = law;
+  // Not used by the states; only kept valid (below a Gent locking).
+  const double locking = locking_first_invariant(law);
+  if (std::isfinite(locking)) membrane.critical_i1 = std::min(95.2, 0.5 * (3.0 + locking));
+  validate(membrane);
+  SolverOptions options;
+  options.record_fields = false;
+  for (std::size_t i = 0; i < out.stretches.size(); ++i) {
+    const double stretch = out.stretches[i];
+    const double pole = equibiaxial_first_invariant(stretch);
+    if (pole >= locking)
+      throw std::invalid_argument(
+          fmt::format("test {}: the mark's stretch {:.6g} gives I1 = {:.6g} at the pole, at or "
+                      "beyond the material's locking value {:.6g}: this law cannot describe "
+                      "the test",
+                      i + 1,
+                      stretch,
+                      pole,
+                      locking));
+    const InflationState state = inflate_at_pole_stretch(membrane, stretch, options);
+    if (!state.ok()) {
+      out.status = state.status;
+      out.message = fmt::format(
+          "test {}: no inflated state at pole stretch {:.6g}: {}", i + 1, stretch, state.message);
+      return out;
+    }
+    // At the pole the closed form is exact; elsewhere the state's largest I1 is above it.
+    const bool at_pole =
+        !(state.max_first_invariant > pole) || state.max_first_invariant_reference_radius_mm == 0.0;
+    out.pole_first_invariants.push_back(pole);
+    out.first_invariants.push_back(at_pole ? pole : state.max_first_invariant);
+    out.largest_i1_radius_fractions.push_back(
+        at_pole ? 0.0 : state.max_first_invariant_reference_radius_mm / membrane.clamp_radius_mm);
+  }
+  out.status = Status::Converged;
+  summarise(out);
   return out;
 }
 

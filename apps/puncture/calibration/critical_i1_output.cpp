@@ -11,14 +11,32 @@ namespace puncture::cli::calibration {
 namespace {
 
 Table tests_rows(const CriticalI1Report& r) {
-  Table t{{"test", "initial_radius_mm", "burst_radius_mm", "stretch", "I1"}, {}};
+  const auto& e = r.estimate;
+  Table t{{"test", "initial_radius_mm", "burst_radius_mm", "stretch", "pole_I1", "I1", "at_R/A"},
+          {}};
   for (std::size_t i = 0; i < r.tests.size(); ++i)
     t.rows.push_back({std::to_string(i + 1),
                       r.tests[i].initial_radius_mm,
                       r.tests[i].burst_radius_mm,
-                      r.estimate.stretches[i],
-                      r.estimate.first_invariants[i]});
+                      e.stretches[i],
+                      e.pole_first_invariants[i],
+                      e.first_invariants[i],
+                      e.largest_i1_radius_fractions[i]});
   return t;
+}
+
+// The law in words, e.g. "mooney-rivlin (alpha = 0.1)".
+std::string law_text(const MaterialLaw& law) {
+  return std::visit(
+      [&](const auto& l) -> std::string {
+        using L = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<L, Gent>)
+          return fmt::format("{} (J_lim = {:g})", law_name(law), l.j_lim);
+        if constexpr (std::is_same_v<L, MooneyRivlin>)
+          return fmt::format("{} (alpha = {:g})", law_name(law), l.alpha);
+        return law_name(law);
+      },
+      law);
 }
 
 }  // namespace
@@ -27,11 +45,22 @@ std::string summary(const CriticalI1Report& r) {
   const auto& e = r.estimate;
   std::string out = "Inputs\n";
   line(out, "inflation tests", fmt::format("{} (from {})", r.tests.size(), r.source));
+  line(out,
+       "membrane",
+       r.law ? law_text(*r.law) + ", inflated to the mark's pole stretch"
+             : std::string("not solved (--pole-only): the pole's I1, as the paper"));
   out +=
-      "Burst stretch and I1 per test (equibiaxial at the pole: lambda = burst radius /\n"
-      "initial radius, I1 = 2 lambda^2 + lambda^-4; radii in mm)\n";
+      "Burst stretch and I1 per test (the mark at the pole: stretch = burst radius /\n"
+      "initial radius, pole_I1 = 2 stretch^2 + stretch^-4; I1 = the membrane's largest,\n"
+      "at reference radius R / A (0: the pole); radii in mm)\n";
   const auto t = tests_rows(r);
   text_table(out, t, all_rows(t));
+  bool off_pole = false;
+  for (const double at : e.largest_i1_radius_fractions) off_pole = off_pole || at > 0.0;
+  if (off_pole)
+    out +=
+        "  The largest I1 is not at the pole: the burst starts where it is, and the pole's\n"
+        "  I1 (the paper's estimate) would underestimate the critical I1.\n";
   out += "Critical I1\n";
   line(out, "critical I1 (mean)", num(e.mean, "critical I1"));
   line(out,
@@ -55,11 +84,19 @@ std::string json_text(const CriticalI1Report& r) {
   const auto& e = r.estimate;
   json tests = json::array();
   for (std::size_t i = 0; i < r.tests.size(); ++i)
-    tests.push_back({{"initial_radius_mm", finite(r.tests[i].initial_radius_mm, "initial radius")},
-                     {"burst_radius_mm", finite(r.tests[i].burst_radius_mm, "burst radius")},
-                     {"stretch", finite(e.stretches[i], "stretch")},
-                     {"i1", finite(e.first_invariants[i], "I1")}});
-  return dump({{"inputs", {{"source", r.source}, {"tests", tests}}},
+    tests.push_back(
+        {{"initial_radius_mm", finite(r.tests[i].initial_radius_mm, "initial radius")},
+         {"burst_radius_mm", finite(r.tests[i].burst_radius_mm, "burst radius")},
+         {"stretch", finite(e.stretches[i], "stretch")},
+         {"pole_i1", finite(e.pole_first_invariants[i], "pole I1")},
+         {"i1", finite(e.first_invariants[i], "I1")},
+         {"largest_i1_radius_fraction", finite(e.largest_i1_radius_fractions[i], "R / A")}});
+  json membrane = nullptr;
+  if (r.law) {
+    membrane = material_json(Material{1.0, *r.law});
+    membrane.erase("shear_modulus_mpa");  // the result does not depend on it
+  }
+  return dump({{"inputs", {{"source", r.source}, {"tests", tests}, {"membrane_law", membrane}}},
                {"critical_i1",
                 {{"mean", finite(e.mean, "critical I1")},
                  {"sd", value_or_null(e.standard_deviation, "standard deviation")},
