@@ -65,6 +65,8 @@ std::string law_repr(const MaterialLaw& law) {
         if constexpr (std::is_same_v<L, Gent>) return fmt::format("Gent(j_lim={:g})", l.j_lim);
         if constexpr (std::is_same_v<L, MooneyRivlin>)
           return fmt::format("MooneyRivlin(alpha={:g})", l.alpha);
+        if constexpr (std::is_same_v<L, Yeoh>)
+          return fmt::format("Yeoh(c2={:g}, c3={:g})", l.c2, l.c3);
         return "NeoHookean()";
       },
       law);
@@ -185,6 +187,20 @@ void bind_problem(py::module_& m) {
       .def_readwrite("alpha", &MooneyRivlin::alpha, "C2 / (C1 + C2), in [0, 1)")
       .def("__repr__", [](const MooneyRivlin& r) { return law_repr(r); });
   copyable(mr);
+  py::class_<Yeoh> yeoh(
+      m,
+      "Yeoh",
+      "Yeoh law W/G = x/2 + c2 x^2 + c3 x^3, x = I1 - 3 (c2 = C20/G, c3 = C30/G,\n"
+      "G = 2 C10; both >= 0).  Material.yeoh(c10, c20, c30) takes the MPa values.");
+  yeoh.def(py::init([](double c2, double c3) {
+             return Yeoh{c2, c3};
+           }),
+           py::arg("c2") = 0.0,
+           py::arg("c3") = 0.0)
+      .def_readwrite("c2", &Yeoh::c2, "C20 / G")
+      .def_readwrite("c3", &Yeoh::c3, "C30 / G")
+      .def("__repr__", [](const Yeoh& y) { return law_repr(y); });
+  copyable(yeoh);
 
   py::class_<Material> material(m, "Material", "Shear modulus [MPa] and strain-energy law");
   material
@@ -216,6 +232,19 @@ void bind_problem(py::module_& m) {
           py::arg("shear_modulus_mpa") = Material{}.shear_modulus_mpa,
           py::arg("alpha") = MooneyRivlin{}.alpha,
           "Mooney-Rivlin rubber, alpha = C2 / (C1 + C2)")
+      .def_static(
+          "yeoh",
+          [](double c10, double c20, double c30) {
+            if (!std::isfinite(c10) || c10 <= 0.0)
+              throw py::value_error(fmt::format(
+                  "c10_mpa: Yeoh C10 must be a finite number > 0 MPa (G = 2 C10), got {}", c10));
+            const double g = 2.0 * c10;
+            return Material{g, Yeoh{c20 / g, c30 / g}};
+          },
+          py::arg("c10_mpa"),
+          py::arg("c20_mpa") = 0.0,
+          py::arg("c30_mpa") = 0.0,
+          "Yeoh rubber from C10, C20, C30 [MPa]: G = 2 C10")
       .def_readwrite(
           "shear_modulus_mpa", &Material::shear_modulus_mpa, "initial shear modulus G [MPa]")
       .def_property(

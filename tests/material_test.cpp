@@ -6,6 +6,9 @@
 
 #include <cmath>
 
+#include "puncture/loading_curve.hpp"
+#include "puncture/problem.hpp"
+
 namespace puncture {
 namespace {
 
@@ -20,10 +23,11 @@ class MaterialLawTest : public ::testing::Test {
   static Law law() {
     if constexpr (std::is_same_v<Law, Gent>) return Gent{125.0};
     if constexpr (std::is_same_v<Law, MooneyRivlin>) return MooneyRivlin{0.2};
+    if constexpr (std::is_same_v<Law, Yeoh>) return Yeoh{0.05, 0.001};
     return Law{};
   }
 };
-using Laws = ::testing::Types<Gent, NeoHookean, MooneyRivlin>;
+using Laws = ::testing::Types<Gent, NeoHookean, MooneyRivlin, Yeoh>;
 TYPED_TEST_SUITE(MaterialLawTest, Laws);
 
 // Central differences with step h have error O(h^2 W''') ~ 1e-10 relative at h = 1e-5, plus
@@ -139,7 +143,51 @@ TEST(ClosedForms, UniaxialAndEquibiaxialStressOfEveryLaw) {
     EXPECT_NEAR(equibiaxial_stress(MooneyRivlin{alpha}, l),
                 equi * (1.0 - alpha + alpha * l * l),
                 tol * l * l);
+    // Yeoh: s = 2 dW/dI1 (l - l^-2) uniaxially, (l - l^-5) equibiaxially, with
+    // dW/dI1 / G = 1/2 + 2 c2 x + 3 c3 x^2 (x = I1 - 3).
+    const double c2 = 0.05, c3 = 0.001;
+    const auto w1 = [&](double x) { return 0.5 + 2.0 * c2 * x + 3.0 * c3 * x * x; };
+    const double x_uni = l * l + 2.0 / l - 3.0, x_equi = 2.0 * l * l + std::pow(l, -4.0) - 3.0;
+    EXPECT_NEAR(uniaxial_stress(Yeoh{c2, c3}, l), 2.0 * w1(x_uni) * uni, tol * w1(x_uni));
+    EXPECT_NEAR(equibiaxial_stress(Yeoh{c2, c3}, l), 2.0 * w1(x_equi) * equi, tol * w1(x_equi));
   }
+}
+
+// Yeoh without its higher terms is neo-Hookean: the same stresses to the bit, so the same
+// solutions (here the whole puncture prediction).
+TEST(Reductions, YeohWithoutHigherTermsIsNeoHookean) {
+  for (double l1 : {0.9, 1.0, 1.5, 4.0})
+    for (double l2 : {0.8, 1.0, 2.5}) {
+      const auto y = membrane_stress(Yeoh{}, l1, l2), n = membrane_stress(NeoHookean{}, l1, l2);
+      EXPECT_EQ(y.s1, n.s1);
+      EXPECT_EQ(y.s2, n.s2);
+      EXPECT_EQ(y.ds1_dl1, n.ds1_dl1);
+      EXPECT_EQ(y.ds1_dl2, n.ds1_dl2);
+      EXPECT_EQ(y.ds2_dl2, n.ds2_dl2);
+    }
+  Problem yeoh, neo;
+  yeoh.material.law = Yeoh{};
+  neo.material.law = NeoHookean{};
+  const auto a = predict_puncture(yeoh), b = predict_puncture(neo);
+  ASSERT_TRUE(a.ok()) << a.message;
+  ASSERT_TRUE(b.ok()) << b.message;
+  EXPECT_NEAR(a.force_n, b.force_n, 1e-10 * b.force_n);
+  EXPECT_NEAR(a.depth_mm, b.depth_mm, 1e-10 * b.depth_mm);
+  EXPECT_NEAR(a.part_three_stretch, b.part_three_stretch, 1e-10 * b.part_three_stretch);
+}
+
+TEST(Validation, YeohCoefficientsMustNotBeNegative) {
+  Problem p;
+  p.material.law = Yeoh{-0.01, 0.001};
+  auto errors = validation_errors(p);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].parameter, "material.law.c2");
+  p.material.law = Yeoh{0.01, std::nan("")};
+  errors = validation_errors(p);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].parameter, "material.law.c3");
+  p.material.law = Yeoh{0.0, 0.0};
+  EXPECT_TRUE(validation_errors(p).empty());
 }
 
 }  // namespace

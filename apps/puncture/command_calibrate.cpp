@@ -274,12 +274,16 @@ std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format f
 FitLaw fit_law_of(const std::string& material) {
   if (material == "neo-hookean") return FitLaw::NeoHookean;
   if (material == "mooney-rivlin") return FitLaw::MooneyRivlin;
+  if (material == "yeoh")
+    throw InputError(
+        "--material: `fit uniaxial` fits gent, neo-hookean and mooney-rivlin; yeoh is not "
+        "fitted yet");
   return FitLaw::Gent;
 }
 
 std::string run_fit_uniaxial(const CLI::App& app, const ProblemFlags& pf, const CalibrationFlags& f,
                              Format format) {
-  for (const char* fitted : {"--shear-modulus", "--jlim", "--mr-alpha"})
+  for (const char* fitted : {"--shear-modulus", "--jlim", "--mr-alpha", "--yeoh"})
     if (given(app, fitted))
       throw InputError(fmt::format(
           "{}: `fit uniaxial` determines the material's parameters; do not give it", fitted));

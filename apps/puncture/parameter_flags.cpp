@@ -12,7 +12,7 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 23> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 25> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
@@ -21,6 +21,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 23> kFlagOfP
     {"material.shear_modulus_mpa", "--shear-modulus"},
     {"material.law.j_lim", "--jlim"},
     {"material.law.alpha", "--mr-alpha"},
+    {"material.law.c2", "--yeoh"},
+    {"material.law.c3", "--yeoh"},
     {"friction", "--friction"},
     {"critical_i1", "--critical-i1"},
     {"stick.threshold", "--stick"},

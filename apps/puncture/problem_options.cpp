@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cmath>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -19,15 +20,48 @@ constexpr const char* kGeometry = "Geometry";
 constexpr const char* kMaterial = "Material";
 constexpr const char* kContact = "Contact and failure";
 
-MaterialLaw law_of(const ProblemFlags& f, std::vector<std::string>& errors) {
-  if (f.material != "gent" && f.j_lim_option && f.j_lim_option->count() > 0)
+// The material the flags describe: --shear-modulus and the law's flags, or --yeoh's C10, C20,
+// C30 (G = 2 C10).
+Material material_of(const ProblemFlags& f, std::vector<std::string>& errors) {
+  const auto given = [](const CLI::Option* o) { return o && o->count() > 0; };
+  if (f.material != "gent" && given(f.j_lim_option))
     errors.push_back(fmt::format("--jlim: applies only to --material gent, not {}", f.material));
-  if (f.material != "mooney-rivlin" && f.mr_alpha_option && f.mr_alpha_option->count() > 0)
+  if (f.material != "mooney-rivlin" && given(f.mr_alpha_option))
     errors.push_back(
         fmt::format("--mr-alpha: applies only to --material mooney-rivlin, not {}", f.material));
-  if (f.material == "neo-hookean") return NeoHookean{};
-  if (f.material == "mooney-rivlin") return MooneyRivlin{f.mr_alpha};
-  return Gent{f.j_lim};
+  if (f.material != "yeoh" && given(f.yeoh_option))
+    errors.push_back(fmt::format("--yeoh: applies only to --material yeoh, not {}", f.material));
+  Material m;
+  m.shear_modulus_mpa = f.shear_modulus_mpa;
+  if (f.material == "neo-hookean") {
+    m.law = NeoHookean{};
+  } else if (f.material == "mooney-rivlin") {
+    m.law = MooneyRivlin{f.mr_alpha};
+  } else if (f.material == "yeoh") {
+    if (!given(f.yeoh_option) || f.yeoh_mpa.size() != 3) {
+      errors.push_back(
+          fmt::format("--yeoh: --material yeoh needs its three coefficients C10,C20,C30 [MPa], "
+                      "got {}",
+                      given(f.yeoh_option) ? std::to_string(f.yeoh_mpa.size()) + " values"
+                                           : std::string("none")));
+      return m;
+    }
+    if (given(f.shear_modulus_option))
+      errors.push_back(
+          "--shear-modulus: with --yeoh the shear modulus is G = 2 C10; do not give "
+          "it too");
+    const double c10 = f.yeoh_mpa[0];
+    if (!std::isfinite(c10) || c10 <= 0.0) {
+      errors.push_back(
+          fmt::format("--yeoh: C10 must be a finite number > 0 MPa (G = 2 C10), got {}", c10));
+      return m;
+    }
+    m.shear_modulus_mpa = 2.0 * c10;
+    m.law = Yeoh{f.yeoh_mpa[1] / m.shear_modulus_mpa, f.yeoh_mpa[2] / m.shear_modulus_mpa};
+  } else {
+    m.law = Gent{f.j_lim};
+  }
+  return m;
 }
 
 }  // namespace
@@ -56,17 +90,17 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
       ->group(kGeometry)
       ->capture_default_str();
 
-  app.add_option("--shear-modulus",
-                 f.shear_modulus_mpa,
-                 "Initial shear modulus G of the rubber [MPa] (> 0)")
-      ->group(kMaterial)
-      ->capture_default_str();
+  f.shear_modulus_option = app.add_option("--shear-modulus",
+                                          f.shear_modulus_mpa,
+                                          "Initial shear modulus G of the rubber [MPa] (> 0)")
+                               ->group(kMaterial)
+                               ->capture_default_str();
   app.add_option("--material",
                  f.material,
                  "Strain-energy law: gent (the paper's, locks at I1 = 3 + J_lim),\n"
-                 "neo-hookean, or mooney-rivlin (with --mr-alpha)")
+                 "neo-hookean, mooney-rivlin (with --mr-alpha) or yeoh (with --yeoh)")
       ->group(kMaterial)
-      ->check(CLI::IsMember({"gent", "neo-hookean", "mooney-rivlin"}))
+      ->check(CLI::IsMember({"gent", "neo-hookean", "mooney-rivlin", "yeoh"}))
       ->capture_default_str();
   f.j_lim_option = app.add_option("--jlim",
                                   f.j_lim,
@@ -80,6 +114,14 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                                      "[dimensionless] (in [0, 1); mooney-rivlin only)")
                           ->group(kMaterial)
                           ->capture_default_str();
+  f.yeoh_option =
+      app.add_option("--yeoh",
+                     f.yeoh_mpa,
+                     "Yeoh coefficients C10,C20,C30 of W = C10 (I1 - 3) + C20 (I1 - 3)^2\n"
+                     "+ C30 (I1 - 3)^3 [MPa] (C10 > 0, C20 >= 0, C30 >= 0; sets\n"
+                     "G = 2 C10; yeoh only)")
+          ->delimiter(',')
+          ->group(kMaterial);
 
   app.add_option("--friction",
                  f.friction,
@@ -129,8 +171,7 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   else
     p.indenter = FlatPunch{f.indenter_radius_mm};
   p.geometry.thickness_mm = f.thickness_mm;
-  p.material.shear_modulus_mpa = f.shear_modulus_mpa;
-  p.material.law = law_of(f, errors);
+  p.material = material_of(f, errors);
   p.friction = f.friction;
   p.critical_i1 = f.critical_i1;
   p.part_two_equation = f.part_two_equation == "paper-eq18" ? PartTwoEquation::PaperEq18
@@ -160,7 +201,7 @@ Problem make_problem(const ProblemFlags& f, Unknown unknown) {
 
 MaterialLaw make_law(const ProblemFlags& f) {
   std::vector<std::string> errors;
-  const MaterialLaw law = law_of(f, errors);
+  const MaterialLaw law = material_of(f, errors).law;
   throw_if_invalid("invalid input:", errors, {});
   return law;
 }
@@ -170,8 +211,7 @@ InflationProblem make_inflation_problem(const ProblemFlags& f) {
   InflationProblem p;
   p.clamp_radius_mm = f.clamp_radius_mm;
   p.thickness_mm = f.thickness_mm;
-  p.material.shear_modulus_mpa = f.shear_modulus_mpa;
-  p.material.law = law_of(f, errors);
+  p.material = material_of(f, errors);
   p.critical_i1 = f.critical_i1;
   throw_if_invalid("invalid input:", errors, validation_errors(p));
   return p;

@@ -3,6 +3,7 @@
 // failure.  Defaults are the library's (the paper's lubricated silicone membrane).
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "puncture/inflation.hpp"
 #include "puncture/problem.hpp"
@@ -19,12 +20,15 @@ struct ProblemFlags {
   std::string material = "gent";
   double j_lim = Gent{}.j_lim;
   double mr_alpha = MooneyRivlin{}.alpha;
+  std::vector<double> yeoh_mpa;  // C10, C20, C30 [MPa]
   double friction = defaults.friction;
   double critical_i1 = defaults.critical_i1;
   std::string stick = "none";
   std::string part_two_equation = "ring-balance";
   CLI::Option* j_lim_option = nullptr;
   CLI::Option* mr_alpha_option = nullptr;
+  CLI::Option* shear_modulus_option = nullptr;
+  CLI::Option* yeoh_option = nullptr;
 };
 
 // Registers the flags on `app` (with units and allowed values in their help).

@@ -9,11 +9,12 @@
 #include "puncture/materials/gent.hpp"
 #include "puncture/materials/mooney_rivlin.hpp"
 #include "puncture/materials/neo_hookean.hpp"
+#include "puncture/materials/yeoh.hpp"
 #include "puncture/membrane_stress.hpp"
 
 namespace puncture {
 
-using MaterialLaw = std::variant<Gent, NeoHookean, MooneyRivlin>;
+using MaterialLaw = std::variant<Gent, NeoHookean, MooneyRivlin, Yeoh>;
 
 struct Material {
   double shear_modulus_mpa = 0.06;  // initial shear modulus G [MPa]; paper §4.1

@@ -289,3 +289,19 @@ def test_sphere_tipped_probe_matches_cli(cli):
     state = pu.solve_at_depth(problem, 10.0)
     tip = state.fields.part == 3
     assert tip.any() and (state.fields.contact_pressure_mpa[tip] > 0).all()
+
+
+def test_yeoh_law_from_its_coefficients_matches_cli(cli):
+    m = pu.Material.yeoh(c10_mpa=0.03, c20_mpa=0.0015, c30_mpa=0.00003)
+    assert m.shear_modulus_mpa == 0.06 and isinstance(m.law, pu.Yeoh)
+    assert m.law.c2 == pytest.approx(0.025) and m.law.c3 == pytest.approx(0.0005)
+    assert m.law_name == "yeoh"
+    prediction = pu.predict_puncture(pu.Problem(material=m))
+    from_cli = cli.json("puncture", "--material", "yeoh", "--yeoh", "0.03,0.0015,0.00003")
+    assert rel(prediction.force_n, from_cli["puncture"]["force_n"]) < 1e-12
+    # Yeoh without its higher terms is neo-Hookean to the bit
+    plain = pu.Problem(material=pu.Material(0.06, pu.Yeoh()))
+    neo = pu.Problem(material=pu.Material.neo_hookean())
+    assert pu.predict_puncture(plain).force_n == pu.predict_puncture(neo).force_n
+    with pytest.raises(ValueError, match="c10_mpa"):
+        pu.Material.yeoh(c10_mpa=0)

@@ -19,6 +19,8 @@ INVALID = [
      ["material.law.j_lim", "critical_i1"]),
     ({"material": pu.Material.mooney_rivlin(alpha=1)},
      ["--material", "mooney-rivlin", "--mr-alpha", "1"], ["material.law.alpha"]),
+    ({"material": pu.Material.yeoh(c10_mpa=0.03, c20_mpa=-0.001, c30_mpa=0.0001)},
+     ["--material", "yeoh", "--yeoh", "0.03,-0.001,0.0001"], ["material.law.c2"]),
     ({"friction": -0.1}, ["--friction", "-0.1"], ["friction"]),
     ({"friction": 11}, ["--friction", "11"], ["friction"]),
     ({"critical_i1": 128}, ["--critical-i1", "128"], ["critical_i1"]),

@@ -5,6 +5,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "mechanics/membrane_validation.hpp"
@@ -33,6 +34,18 @@ void append_material_errors(std::vector<ValidationError>& errors, const Material
       errors.push_back(
           {"material.law.alpha",
            fmt::format("Mooney-Rivlin alpha = C2/(C1+C2) must be in [0, 1), got {}", mr->alpha)});
+  }
+  if (const auto* yeoh = std::get_if<Yeoh>(&material.law)) {
+    // materials/yeoh.hpp: with a negative coefficient s1 may fall as the stretch grows.
+    for (const auto& [attribute, name, value] : {std::tuple{"material.law.c2", "C20", yeoh->c2},
+                                                 std::tuple{"material.law.c3", "C30", yeoh->c3}})
+      if (!std::isfinite(value) || value < 0.0)
+        errors.push_back(
+            {attribute,
+             fmt::format("Yeoh {} / G must be a finite number >= 0 (a negative coefficient can "
+                         "make the stress fall as the membrane stretches), got {}",
+                         name,
+                         value)});
   }
 }
 

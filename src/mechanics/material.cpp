@@ -12,11 +12,16 @@ std::string law_name(const MaterialLaw& law) {
 
 std::string describe(const Material& material) {
   const std::string params = std::visit(
-      [](const auto& l) -> std::string {
+      [&](const auto& l) -> std::string {
         using L = std::decay_t<decltype(l)>;
         if constexpr (std::is_same_v<L, Gent>) return fmt::format(" (J_lim = {:g})", l.j_lim);
         if constexpr (std::is_same_v<L, MooneyRivlin>)
           return fmt::format(" (alpha = {:g})", l.alpha);
+        if constexpr (std::is_same_v<L, Yeoh>) {  // as users give it: G = 2 C10, Ck0 = ck G
+          const double g = material.shear_modulus_mpa;
+          return fmt::format(
+              " (C10 = {:g}, C20 = {:g}, C30 = {:g} MPa)", 0.5 * g, l.c2 * g, l.c3 * g);
+        }
         return "";
       },
       material.law);

@@ -28,7 +28,8 @@ inline std::vector<std::pair<std::string, MaterialLaw>> laws() {
   return {{"gent", Gent{125.0}},
           {"gent-stiff", Gent{20.0}},
           {"neo-hookean", NeoHookean{}},
-          {"mooney-rivlin", MooneyRivlin{0.1}}};
+          {"mooney-rivlin", MooneyRivlin{0.1}},
+          {"yeoh", Yeoh{0.05, 0.001}}};
 }
 
 // Strain energy per unit reference volume [MPa = mJ/mm^3] at stretches (l1, l2).

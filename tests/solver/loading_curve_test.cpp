@@ -40,6 +40,7 @@ const std::vector<CurveCase> kCurves = {
     {"AlwaysHeld", with_stick(paper_problem(), StickRule::Always)},
     {"NeoHookean", paper_problem(NeoHookean{})},
     {"MooneyRivlin", paper_problem(MooneyRivlin{0.2})},
+    {"Yeoh", paper_problem(Yeoh{0.05, 0.001})},
 };
 
 class Curve : public ::testing::TestWithParam<CurveCase> {

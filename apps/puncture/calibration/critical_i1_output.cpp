@@ -34,6 +34,8 @@ std::string law_text(const MaterialLaw& law) {
           return fmt::format("{} (J_lim = {:g})", law_name(law), l.j_lim);
         if constexpr (std::is_same_v<L, MooneyRivlin>)
           return fmt::format("{} (alpha = {:g})", law_name(law), l.alpha);
+        if constexpr (std::is_same_v<L, Yeoh>)
+          return fmt::format("{} (C20/G = {:g}, C30/G = {:g})", law_name(law), l.c2, l.c3);
         return law_name(law);
       },
       law);
