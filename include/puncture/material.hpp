@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "puncture/materials/gent.hpp"
+#include "puncture/materials/gent_gent.hpp"
 #include "puncture/materials/mooney_rivlin.hpp"
 #include "puncture/materials/neo_hookean.hpp"
 #include "puncture/materials/yeoh.hpp"
@@ -14,7 +15,7 @@
 
 namespace puncture {
 
-using MaterialLaw = std::variant<Gent, NeoHookean, MooneyRivlin, Yeoh>;
+using MaterialLaw = std::variant<Gent, NeoHookean, MooneyRivlin, Yeoh, GentGent>;
 
 struct Material {
   double shear_modulus_mpa = 0.06;  // initial shear modulus G [MPa]; paper §4.1
