@@ -65,8 +65,6 @@ std::string law_repr(const MaterialLaw& law) {
         if constexpr (std::is_same_v<L, Gent>) return fmt::format("Gent(j_lim={:g})", l.j_lim);
         if constexpr (std::is_same_v<L, MooneyRivlin>)
           return fmt::format("MooneyRivlin(alpha={:g})", l.alpha);
-        if constexpr (std::is_same_v<L, GentGent>)
-          return fmt::format("GentGent(j_lim={:g}, alpha={:g})", l.j_lim, l.alpha);
         if constexpr (std::is_same_v<L, Yeoh>)
           return fmt::format("Yeoh(c2={:g}, c3={:g})", l.c2, l.c3);
         return "NeoHookean()";
@@ -203,21 +201,6 @@ void bind_problem(py::module_& m) {
       .def_readwrite("c3", &Yeoh::c3, "C30 / G")
       .def("__repr__", [](const Yeoh& y) { return law_repr(y); });
   copyable(yeoh);
-  py::class_<GentGent> gent_gent(
-      m,
-      "GentGent",
-      "Gent-Gent (Pucci-Saccomandi) law W/G = -(1 - alpha)(J_lim/2) ln(1 - (I1 - 3)/J_lim)\n"
-      "+ alpha (3/2) ln(I2/3): Gent with an I2 term carrying the share alpha of G");
-  gent_gent
-      .def(py::init([](double j_lim, double alpha) {
-             return GentGent{j_lim, alpha};
-           }),
-           py::arg("j_lim") = GentGent{}.j_lim,
-           py::arg("alpha") = GentGent{}.alpha)
-      .def_readwrite("j_lim", &GentGent::j_lim, "limiting value of I1 - 3")
-      .def_readwrite("alpha", &GentGent::alpha, "share of G in the I2 term, in [0, 1)")
-      .def("__repr__", [](const GentGent& g) { return law_repr(g); });
-  copyable(gent_gent);
 
   py::class_<Material> material(m, "Material", "Shear modulus [MPa] and strain-energy law");
   material
@@ -250,15 +233,6 @@ void bind_problem(py::module_& m) {
           py::arg("alpha") = MooneyRivlin{}.alpha,
           "Mooney-Rivlin rubber, alpha = C2 / (C1 + C2)")
       .def_static(
-          "gent_gent",
-          [](double g, double j_lim, double alpha) {
-            return Material{g, GentGent{j_lim, alpha}};
-          },
-          py::arg("shear_modulus_mpa") = Material{}.shear_modulus_mpa,
-          py::arg("j_lim") = GentGent{}.j_lim,
-          py::arg("alpha") = GentGent{}.alpha,
-          "Gent-Gent (Pucci-Saccomandi) rubber")
-      .def_static(
           "yeoh",
           [](double c10, double c20, double c30) {
             if (!std::isfinite(c10) || c10 <= 0.0)
@@ -284,18 +258,16 @@ void bind_problem(py::module_& m) {
           "j_lim",
           [](const Material& mat) -> py::object {
             if (const auto* g = std::get_if<Gent>(&mat.law)) return py::float_(g->j_lim);
-            if (const auto* g = std::get_if<GentGent>(&mat.law)) return py::float_(g->j_lim);
             return py::none();
           },
-          "J_lim for a Gent or Gent-Gent law, else None")
+          "J_lim for a Gent law, else None")
       .def_property_readonly(
           "alpha",
           [](const Material& mat) -> py::object {
             if (const auto* r = std::get_if<MooneyRivlin>(&mat.law)) return py::float_(r->alpha);
-            if (const auto* g = std::get_if<GentGent>(&mat.law)) return py::float_(g->alpha);
             return py::none();
           },
-          "alpha for a Mooney-Rivlin or Gent-Gent law, else None")
+          "alpha for a Mooney-Rivlin law, else None")
       .def_property_readonly(
           "locking_first_invariant",
           [](const Material& mat) { return locking_first_invariant(mat.law); },

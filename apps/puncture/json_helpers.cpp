@@ -41,10 +41,6 @@ json material_json(const Material& m, bool with_j_lim) {
     material["j_lim"] = finite(gent->j_lim, "J_lim");
   if (const auto* mr = std::get_if<MooneyRivlin>(&m.law))
     material["alpha"] = finite(mr->alpha, "Mooney-Rivlin alpha");
-  if (const auto* gg = std::get_if<GentGent>(&m.law)) {
-    if (with_j_lim) material["j_lim"] = finite(gg->j_lim, "J_lim");
-    material["alpha"] = finite(gg->alpha, "Gent-Gent alpha");
-  }
   if (const auto* yeoh = std::get_if<Yeoh>(&m.law)) {  // C10 = G / 2, Ci0 = ci G
     material["c10_mpa"] = finite(0.5 * m.shear_modulus_mpa, "Yeoh C10");
     material["c20_mpa"] = finite(yeoh->c2 * m.shear_modulus_mpa, "Yeoh C20");

@@ -24,12 +24,11 @@ constexpr const char* kContact = "Contact and failure";
 // C30 (G = 2 C10).
 Material material_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   const auto given = [](const CLI::Option* o) { return o && o->count() > 0; };
-  if (f.material != "gent" && f.material != "gent-gent" && given(f.j_lim_option))
+  if (f.material != "gent" && given(f.j_lim_option))
+    errors.push_back(fmt::format("--jlim: applies only to --material gent, not {}", f.material));
+  if (f.material != "mooney-rivlin" && given(f.mr_alpha_option))
     errors.push_back(
-        fmt::format("--jlim: applies only to --material gent or gent-gent, not {}", f.material));
-  if (f.material != "mooney-rivlin" && f.material != "gent-gent" && given(f.mr_alpha_option))
-    errors.push_back(fmt::format(
-        "--mr-alpha: applies only to --material mooney-rivlin or gent-gent, not {}", f.material));
+        fmt::format("--mr-alpha: applies only to --material mooney-rivlin, not {}", f.material));
   if (f.material != "yeoh" && given(f.yeoh_option))
     errors.push_back(fmt::format("--yeoh: applies only to --material yeoh, not {}", f.material));
   Material m;
@@ -38,8 +37,6 @@ Material material_of(const ProblemFlags& f, std::vector<std::string>& errors) {
     m.law = NeoHookean{};
   } else if (f.material == "mooney-rivlin") {
     m.law = MooneyRivlin{f.mr_alpha};
-  } else if (f.material == "gent-gent") {
-    m.law = GentGent{f.j_lim, f.mr_alpha};
   } else if (f.material == "yeoh") {
     if (!given(f.yeoh_option) || f.yeoh_mpa.size() != 3) {
       errors.push_back(
@@ -101,22 +98,20 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
   app.add_option("--material",
                  f.material,
                  "Strain-energy law: gent (the paper's, locks at I1 = 3 + J_lim),\n"
-                 "neo-hookean, mooney-rivlin (with --mr-alpha), yeoh (with --yeoh) or\n"
-                 "gent-gent (Pucci-Saccomandi: gent with a ln(I2/3) term; --jlim, --mr-alpha)")
+                 "neo-hookean, mooney-rivlin (with --mr-alpha) or yeoh (with --yeoh)")
       ->group(kMaterial)
-      ->check(CLI::IsMember({"gent", "neo-hookean", "mooney-rivlin", "yeoh", "gent-gent"}))
+      ->check(CLI::IsMember({"gent", "neo-hookean", "mooney-rivlin", "yeoh"}))
       ->capture_default_str();
   f.j_lim_option = app.add_option("--jlim",
                                   f.j_lim,
                                   "Gent locking parameter J_lim: the largest I1 - 3\n"
-                                  "[dimensionless] (> 0; gent and gent-gent)")
+                                  "[dimensionless] (> 0; gent only)")
                        ->group(kMaterial)
                        ->capture_default_str();
   f.mr_alpha_option = app.add_option("--mr-alpha",
                                      f.mr_alpha,
-                                     "Share of G in the I2 term: Mooney-Rivlin's C2 / (C1 + C2),\n"
-                                     "gent-gent's (2 C2 / 3) / G [dimensionless] (in [0, 1);\n"
-                                     "mooney-rivlin and gent-gent)")
+                                     "Mooney-Rivlin share of G in the I2 term, C2 / (C1 + C2)\n"
+                                     "[dimensionless] (in [0, 1); mooney-rivlin only)")
                           ->group(kMaterial)
                           ->capture_default_str();
   f.yeoh_option =

@@ -7,7 +7,6 @@
 #include <variant>
 
 #include "puncture/materials/gent.hpp"
-#include "puncture/materials/gent_gent.hpp"
 #include "puncture/materials/mooney_rivlin.hpp"
 #include "puncture/materials/neo_hookean.hpp"
 #include "puncture/materials/yeoh.hpp"
@@ -15,7 +14,7 @@
 
 namespace puncture {
 
-using MaterialLaw = std::variant<Gent, NeoHookean, MooneyRivlin, Yeoh, GentGent>;
+using MaterialLaw = std::variant<Gent, NeoHookean, MooneyRivlin, Yeoh>;
 
 struct Material {
   double shear_modulus_mpa = 0.06;  // initial shear modulus G [MPa]; paper §4.1

@@ -305,12 +305,3 @@ def test_yeoh_law_from_its_coefficients_matches_cli(cli):
     assert pu.predict_puncture(plain).force_n == pu.predict_puncture(neo).force_n
     with pytest.raises(ValueError, match="c10_mpa"):
         pu.Material.yeoh(c10_mpa=0)
-
-
-def test_gent_gent_law_matches_cli(cli):
-    m = pu.Material.gent_gent(j_lim=100, alpha=0.2)
-    assert isinstance(m.law, pu.GentGent) and m.j_lim == 100 and m.alpha == 0.2
-    prediction = pu.predict_puncture(pu.Problem(material=m))
-    from_cli = cli.json("puncture", "--material", "gent-gent", "--jlim", "100", "--mr-alpha", "0.2")
-    assert rel(prediction.force_n, from_cli["puncture"]["force_n"]) < 1e-12
-    assert from_cli["inputs"]["material"]["alpha"] == 0.2

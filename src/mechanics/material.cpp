@@ -17,8 +17,6 @@ std::string describe(const Material& material) {
         if constexpr (std::is_same_v<L, Gent>) return fmt::format(" (J_lim = {:g})", l.j_lim);
         if constexpr (std::is_same_v<L, MooneyRivlin>)
           return fmt::format(" (alpha = {:g})", l.alpha);
-        if constexpr (std::is_same_v<L, GentGent>)
-          return fmt::format(" (J_lim = {:g}, alpha = {:g})", l.j_lim, l.alpha);
         if constexpr (std::is_same_v<L, Yeoh>) {  // as users give it: G = 2 C10, Ck0 = ck G
           const double g = material.shear_modulus_mpa;
           return fmt::format(

@@ -29,8 +29,7 @@ inline std::vector<std::pair<std::string, MaterialLaw>> laws() {
           {"gent-stiff", Gent{20.0}},
           {"neo-hookean", NeoHookean{}},
           {"mooney-rivlin", MooneyRivlin{0.1}},
-          {"yeoh", Yeoh{0.05, 0.001}},
-          {"gent-gent", GentGent{125.0, 0.2}}};
+          {"yeoh", Yeoh{0.05, 0.001}}};
 }
 
 // Strain energy per unit reference volume [MPa = mJ/mm^3] at stretches (l1, l2).

@@ -41,7 +41,6 @@ const std::vector<CurveCase> kCurves = {
     {"NeoHookean", paper_problem(NeoHookean{})},
     {"MooneyRivlin", paper_problem(MooneyRivlin{0.2})},
     {"Yeoh", paper_problem(Yeoh{0.05, 0.001})},
-    {"GentGent", paper_problem(GentGent{125.0, 0.2})},
 };
 
 class Curve : public ::testing::TestWithParam<CurveCase> {

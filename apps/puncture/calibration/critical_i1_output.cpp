@@ -36,8 +36,6 @@ std::string law_text(const MaterialLaw& law) {
           return fmt::format("{} (alpha = {:g})", law_name(law), l.alpha);
         if constexpr (std::is_same_v<L, Yeoh>)
           return fmt::format("{} (C20/G = {:g}, C30/G = {:g})", law_name(law), l.c2, l.c3);
-        if constexpr (std::is_same_v<L, GentGent>)
-          return fmt::format("{} (J_lim = {:g}, alpha = {:g})", law_name(law), l.j_lim, l.alpha);
         return law_name(law);
       },
       law);
