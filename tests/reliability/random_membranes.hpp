@@ -20,11 +20,15 @@ inline double uniform(std::mt19937_64& gen, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(gen);
 }
 
+// The laws drawn: the paper's three, or Yeoh's alone.
+enum class Laws { Paper, Yeoh };
+
 // Case `index` of the sweep with `seed`: clamp 5-100 mm, a/A 1e-3-0.5, H 0.01-2 mm,
-// G 0.005-5 MPa, Gent (J_lim 10-1000), neo-Hookean or Mooney-Rivlin (alpha 0-0.5), friction 0-10
-// (a quarter frictionless), every stick rule, both Part II equations, and a critical I1 between
-// 5 and 200 below the law's locking value.
-inline Problem random_membrane(std::uint64_t seed, int index) {
+// G 0.005-5 MPa, Gent (J_lim 10-1000), neo-Hookean or Mooney-Rivlin (alpha 0-0.5) -- or Yeoh
+// (C20/G 1e-4-0.1, C30/G 1e-6-1e-2, each zero a fifth of the time) --, friction 0-10 (a quarter
+// frictionless), every stick rule, both Part II equations, and a critical I1 between 5 and 200
+// below the law's locking value.
+inline Problem random_membrane(std::uint64_t seed, int index, Laws laws = Laws::Paper) {
   std::mt19937_64 gen(seed * 1000003u + static_cast<std::uint64_t>(index));
   Problem p;
   p.geometry.clamp_radius_mm = log_uniform(gen, 5.0, 100.0);
@@ -32,19 +36,25 @@ inline Problem random_membrane(std::uint64_t seed, int index) {
   p.geometry.thickness_mm = log_uniform(gen, 0.01, 2.0);
   p.material.shear_modulus_mpa = log_uniform(gen, 0.005, 5.0);
   double locking = INFINITY;
-  switch (std::uniform_int_distribution<int>(0, 2)(gen)) {
-    case 0: {
-      const double j_lim = log_uniform(gen, 10.0, 1000.0);
-      p.material.law = Gent{j_lim};
-      locking = 3.0 + j_lim;
-      break;
+  if (laws == Laws::Yeoh) {
+    const double c2 = uniform(gen, 0.0, 1.0) < 0.2 ? 0.0 : log_uniform(gen, 1e-4, 0.1);
+    const double c3 = uniform(gen, 0.0, 1.0) < 0.2 ? 0.0 : log_uniform(gen, 1e-6, 1e-2);
+    p.material.law = Yeoh{c2, c3};
+  } else {
+    switch (std::uniform_int_distribution<int>(0, 2)(gen)) {
+      case 0: {
+        const double j_lim = log_uniform(gen, 10.0, 1000.0);
+        p.material.law = Gent{j_lim};
+        locking = 3.0 + j_lim;
+        break;
+      }
+      case 1:
+        p.material.law = NeoHookean{};
+        break;
+      default:
+        p.material.law = MooneyRivlin{uniform(gen, 0.0, 0.5)};
+        break;
     }
-    case 1:
-      p.material.law = NeoHookean{};
-      break;
-    default:
-      p.material.law = MooneyRivlin{uniform(gen, 0.0, 0.5)};
-      break;
   }
   p.friction = uniform(gen, 0.0, 1.0) < 0.25 ? 0.0 : log_uniform(gen, 0.01, 10.0);
   p.critical_i1 = std::min(log_uniform(gen, 5.0, 200.0), 3.0 + 0.9 * (locking - 3.0));
