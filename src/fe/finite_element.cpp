@@ -280,22 +280,19 @@ StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState&
       }
     }
     double lo = length, hi = length, slope_lo = slope, slope_hi = slope;
-    double force_lo = last.state.normalized_force, force_hi = force_lo;
     // Bracket the tangential departure by growing or shrinking the side's length in steps small
     // enough for the last solution to start the next.
     constexpr double factor = 1.25;
     for (int k = 0; k < 200 && (slope_lo >= 0.0 || slope_hi <= 0.0); ++k) {
       if (slope_hi <= 0.0) {
-        lo = hi, slope_lo = slope_hi, force_lo = force_hi;
+        lo = hi, slope_lo = slope_hi;
         hi *= factor;
         slope_hi = slope_at(hi);
-        force_hi = last.state.normalized_force;
       } else {
-        hi = lo, slope_hi = slope_lo, force_hi = force_lo;
+        hi = lo, slope_hi = slope_lo;
         lo /= factor;
         if (lo < 1e-12 * corner) break;
         slope_lo = slope_at(lo);
-        force_lo = last.state.normalized_force;
       }
     }
     if (!(slope_lo < 0.0 && slope_hi > 0.0)) {
