@@ -22,7 +22,11 @@ struct Material {
 };
 
 std::string law_name(const MaterialLaw& law);
-// One-line description with parameters, e.g. "gent (J_lim = 125)".
+// The law with its parameters as it holds them, e.g. "gent (J_lim = 125)",
+// "yeoh (C20/G = 0.025, C30/G = 0.0005)".
+std::string describe(const MaterialLaw& law);
+// One-line description with parameters, e.g. "gent (J_lim = 125), G = 0.06 MPa"; Yeoh's as users
+// give them, C10, C20, C30 in MPa.
 std::string describe(const Material& material);
 // The I1 at which the law locks: 3 + J_lim for Gent, infinity for laws that do not lock.
 double locking_first_invariant(const MaterialLaw& law);

@@ -10,23 +10,31 @@ std::string law_name(const MaterialLaw& law) {
   return std::visit([](const auto& l) { return std::string(l.name()); }, law);
 }
 
-std::string describe(const Material& material) {
+std::string describe(const MaterialLaw& law) {
   const std::string params = std::visit(
-      [&](const auto& l) -> std::string {
+      [](const auto& l) -> std::string {
         using L = std::decay_t<decltype(l)>;
         if constexpr (std::is_same_v<L, Gent>) return fmt::format(" (J_lim = {:g})", l.j_lim);
         if constexpr (std::is_same_v<L, MooneyRivlin>)
           return fmt::format(" (alpha = {:g})", l.alpha);
-        if constexpr (std::is_same_v<L, Yeoh>) {  // as users give it: G = 2 C10, Ck0 = ck G
-          const double g = material.shear_modulus_mpa;
-          return fmt::format(
-              " (C10 = {:g}, C20 = {:g}, C30 = {:g} MPa)", 0.5 * g, l.c2 * g, l.c3 * g);
-        }
+        if constexpr (std::is_same_v<L, Yeoh>)
+          return fmt::format(" (C20/G = {:g}, C30/G = {:g})", l.c2, l.c3);
         return "";
       },
-      material.law);
-  return fmt::format(
-      "{}{}, G = {:g} MPa", law_name(material.law), params, material.shear_modulus_mpa);
+      law);
+  return law_name(law) + params;
+}
+
+std::string describe(const Material& material) {
+  const double g = material.shear_modulus_mpa;
+  std::string law = describe(material.law);
+  if (const auto* yeoh = std::get_if<Yeoh>(&material.law))  // as users give it: G = 2 C10
+    law = fmt::format("{} (C10 = {:g}, C20 = {:g}, C30 = {:g} MPa)",
+                      law_name(material.law),
+                      0.5 * g,
+                      yeoh->c2 * g,
+                      yeoh->c3 * g);
+  return fmt::format("{}, G = {:g} MPa", law, g);
 }
 
 double locking_first_invariant(const MaterialLaw& law) {

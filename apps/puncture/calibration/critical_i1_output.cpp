@@ -25,22 +25,6 @@ Table tests_rows(const CriticalI1Report& r) {
   return t;
 }
 
-// The law in words, e.g. "mooney-rivlin (alpha = 0.1)".
-std::string law_text(const MaterialLaw& law) {
-  return std::visit(
-      [&](const auto& l) -> std::string {
-        using L = std::decay_t<decltype(l)>;
-        if constexpr (std::is_same_v<L, Gent>)
-          return fmt::format("{} (J_lim = {:g})", law_name(law), l.j_lim);
-        if constexpr (std::is_same_v<L, MooneyRivlin>)
-          return fmt::format("{} (alpha = {:g})", law_name(law), l.alpha);
-        if constexpr (std::is_same_v<L, Yeoh>)
-          return fmt::format("{} (C20/G = {:g}, C30/G = {:g})", law_name(law), l.c2, l.c3);
-        return law_name(law);
-      },
-      law);
-}
-
 }  // namespace
 
 std::string summary(const CriticalI1Report& r) {
@@ -49,7 +33,7 @@ std::string summary(const CriticalI1Report& r) {
   line(out, "inflation tests", fmt::format("{} (from {})", r.tests.size(), r.source));
   line(out,
        "membrane",
-       r.law ? law_text(*r.law) + ", inflated to the mark's pole stretch"
+       r.law ? describe(*r.law) + ", inflated to the mark's pole stretch"
              : std::string("not solved (--pole-only): the pole's I1, as the paper"));
   out +=
       "Burst stretch and I1 per test (the mark at the pole: stretch = burst radius /\n"

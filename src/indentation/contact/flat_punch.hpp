@@ -176,7 +176,8 @@ class FlatPunchContact {
                          r_prev = r;
                          y_prev = state;
                          if (record) knots.add(r, state);
-                         side_max.observe(r, state, first_invariant(state[0], s_.a / r));
+                         if (maxima)
+                           side_max.observe(r, state, first_invariant(state[0], s_.a / r));
                          return true;
                        });
     if (!ok || r_hit < 0.0) {
@@ -241,8 +242,7 @@ class FlatPunchContact {
     }
     const PartTwoState corner = *corner_state;
     // The last step, down to the corner, may hold the side's largest I1.
-    side_max.observe(r_corner, corner, first_invariant(corner[0], s_.a / r_corner));
-    if (!maxima) side_max = InteriorMaximum<PartTwoState>{};
+    if (maxima) side_max.observe(r_corner, corner, first_invariant(corner[0], s_.a / r_corner));
     if (record) {
       knots.add(r_corner, corner);
       sol.part_two.clear();
