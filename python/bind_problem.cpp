@@ -151,6 +151,18 @@ void bind_problem(py::module_& m) {
       .def("__repr__", &geometry_repr);
   copyable(geometry);
 
+  py::class_<Preload> preload(m, "Preload", "How the membrane is loaded before indentation");
+  preload
+      .def(py::init([](double prestretch) { return Preload{prestretch}; }),
+           py::arg("prestretch") = Preload{}.prestretch)
+      .def_readwrite("prestretch",
+                     &Preload::prestretch,
+                     "equibiaxial pre-stretch L0 (>= 1): the stress-free disc of radius A / L0 "
+                     "is stretched by L0 and clamped at A")
+      .def("__repr__",
+           [](const Preload& p) { return fmt::format("Preload(prestretch={:g})", p.prestretch); });
+  copyable(preload);
+
   // Indenter shapes are values (read-only: assign a new one to Problem.indenter).
   py::class_<FlatPunch> flat_punch(
       m, "FlatPunch", "The paper's sharp flat-ended cylindrical indenter");
@@ -360,8 +372,10 @@ void bind_problem(py::module_& m) {
                        double friction,
                        double critical_i1,
                        const std::variant<StickCriterion, std::string>& stick,
-                       const std::variant<PartTwoEquation, std::string>& equation) {
+                       const std::variant<PartTwoEquation, std::string>& equation,
+                       const Preload& preload) {
              return Problem{g,
+                            preload,
                             indenter,
                             mat,
                             friction,
@@ -375,8 +389,10 @@ void bind_problem(py::module_& m) {
            py::arg("friction") = defaults.friction,
            py::arg("critical_i1") = defaults.critical_i1,
            py::arg("stick") = defaults.stick,
-           py::arg("part_two_equation") = defaults.part_two_equation)
+           py::arg("part_two_equation") = defaults.part_two_equation,
+           py::arg("preload") = defaults.preload)
       .def_readwrite("geometry", &Problem::geometry)
+      .def_readwrite("preload", &Problem::preload, "the pre-stretch before indentation (Preload)")
       .def_readwrite("indenter", &Problem::indenter, "the probe (FlatPunch or SphereTipped)")
       .def_readwrite("material", &Problem::material)
       .def_readwrite(
@@ -399,6 +415,9 @@ void bind_problem(py::module_& m) {
           "PartTwoEquation, or 'ring-balance' / 'paper-eq18'")
       .def_property_readonly(
           "force_scale_n", &force_scale_n, "2 pi G H A [N]: normalised force = F / this")
+      .def_property_readonly("reference_clamp_radius_mm",
+                             &reference_clamp_radius_mm,
+                             "A / L0 [mm]: the radius of the stress-free disc that is clamped")
       .def("validation_errors",
            py::overload_cast<const Problem&>(&validation_errors),
            "Every problem with the input (ValidationError: attribute and message); empty if valid")
@@ -412,14 +431,15 @@ void bind_problem(py::module_& m) {
       .def("__repr__", [](const Problem& p) {
         return fmt::format(
             "Problem(geometry={}, indenter={}, material={}, friction={:g}, critical_i1={:g}, "
-            "stick={}, part_two_equation='{}')",
+            "stick={}, part_two_equation='{}', preload=Preload(prestretch={:g}))",
             geometry_repr(p.geometry),
             indenter_repr(p.indenter),
             material_repr(p.material),
             p.friction,
             p.critical_i1,
             stick_repr(p.stick),
-            to_string(p.part_two_equation));
+            to_string(p.part_two_equation),
+            p.preload.prestretch);
       });
   copyable(problem);
 

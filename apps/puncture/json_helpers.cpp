@@ -62,6 +62,7 @@ json problem_json(const Problem& p, std::string_view calibrated) {
   json out = {{"clamp_radius_mm", finite(p.geometry.clamp_radius_mm, "clamp radius")},
               {"indenter_radius_mm", finite(radius_mm(p.indenter), "indenter radius")},
               {"thickness_mm", finite(p.geometry.thickness_mm, "thickness")},
+              {"prestretch", finite(p.preload.prestretch, "pre-stretch")},
               {"material", material_json(p.material, calibrated != "jlim")}};
   if (calibrated != "friction") out["friction"] = finite(p.friction, "friction");
   out["critical_i1"] = finite(p.critical_i1, "critical I1");

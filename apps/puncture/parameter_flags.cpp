@@ -12,10 +12,11 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 25> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 26> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
+    {"preload.prestretch", "--prestretch"},
     {"clamp_radius_mm", "--clamp-radius"},
     {"thickness_mm", "--thickness"},
     {"material.shear_modulus_mpa", "--shear-modulus"},

@@ -89,6 +89,15 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
   app.add_option("--thickness", f.thickness_mm, "Undeformed membrane thickness H [mm] (> 0)")
       ->group(kGeometry)
       ->capture_default_str();
+  f.prestretch_option =
+      app.add_option("--prestretch",
+                     f.prestretch,
+                     "Equibiaxial pre-stretch L0 [dimensionless] (>= 1): the stress-free\n"
+                     "disc of radius A / L0 is stretched by L0 and clamped at radius A\n"
+                     "before indentation; H is its stress-free thickness, stretches and\n"
+                     "I1 count from it (1: mounted stress-free, the paper's case)")
+          ->group(kGeometry)
+          ->capture_default_str();
 
   f.shear_modulus_option = app.add_option("--shear-modulus",
                                           f.shear_modulus_mpa,
@@ -171,6 +180,7 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   else
     p.indenter = FlatPunch{f.indenter_radius_mm};
   p.geometry.thickness_mm = f.thickness_mm;
+  p.preload.prestretch = f.prestretch;
   p.material = material_of(f, errors);
   p.friction = f.friction;
   p.critical_i1 = f.critical_i1;
@@ -209,6 +219,10 @@ MaterialLaw make_law(const ProblemFlags& f) {
 InflationProblem make_inflation_problem(const ProblemFlags& f) {
   std::vector<std::string> errors;
   InflationProblem p;
+  if (f.prestretch_option && f.prestretch_option->count() > 0 && f.prestretch != 1.0)
+    errors.push_back(
+        "--prestretch: the inflation of a pre-stretched membrane is not implemented yet; "
+        "inflation starts from the stress-free membrane");
   p.clamp_radius_mm = f.clamp_radius_mm;
   p.thickness_mm = f.thickness_mm;
   p.material = material_of(f, errors);

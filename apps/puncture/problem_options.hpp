@@ -16,6 +16,7 @@ struct ProblemFlags {
   std::string indenter = "flat";
   double indenter_radius_mm = radius_mm(defaults.indenter);
   double thickness_mm = defaults.geometry.thickness_mm;
+  double prestretch = defaults.preload.prestretch;
   double shear_modulus_mpa = defaults.material.shear_modulus_mpa;
   std::string material = "gent";
   double j_lim = Gent{}.j_lim;
@@ -29,6 +30,7 @@ struct ProblemFlags {
   CLI::Option* mr_alpha_option = nullptr;
   CLI::Option* shear_modulus_option = nullptr;
   CLI::Option* yeoh_option = nullptr;
+  CLI::Option* prestretch_option = nullptr;
 };
 
 // Registers the flags on `app` (with units and allowed values in their help).
@@ -42,7 +44,7 @@ Problem make_problem(const ProblemFlags& flags);
 Problem make_problem(const ProblemFlags& flags, Unknown unknown);
 
 // The membrane the flags describe, for `inflate` (no indenter: the indenter and contact flags
-// are not read).  Throws InputError like make_problem.
+// are not read; --prestretch is refused).  Throws InputError like make_problem.
 InflationProblem make_inflation_problem(const ProblemFlags& flags);
 
 // The strain-energy law the material flags describe (--material, --jlim, --mr-alpha).  Throws

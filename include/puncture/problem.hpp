@@ -16,6 +16,14 @@ struct Geometry {
   double thickness_mm = 0.2;      // undeformed membrane thickness, H [mm]
 };
 
+// How the membrane is loaded before the indenter touches it.
+struct Preload {
+  // Equibiaxial pre-stretch L0 (>= 1): the stress-free disc of radius A / L0 is stretched by L0
+  // and clamped at radius A, then indented (1: mounted stress-free, the paper's case).  Stretches
+  // and I1 are measured from the stress-free disc, reference radii on it.
+  double prestretch = 1.0;
+};
+
 // When the membrane, held at the indenter's edge at first, starts to slide over it.  Coulomb
 // friction alone cannot hold an unstretched membrane under the tip (docs/model.md, "Stick and
 // slip"), so any stick stage needs a criterion the paper does not give; each rule is one.
@@ -41,6 +49,7 @@ enum class PartTwoEquation {
 
 struct Problem {
   Geometry geometry;
+  Preload preload;
   Indenter indenter = FlatPunch{2.0};  // the paper's 2 mm flat punch
   Material material;
   double friction = 0.18;     // Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)
@@ -63,6 +72,9 @@ std::vector<ValidationError> validation_errors(const Problem& problem, Unknown u
 
 // Force scale 2 pi G H A [N]: the paper's normalised force is F / force_scale.
 double force_scale_n(const Problem& problem);
+// The radius of the stress-free disc that is clamped, A / L0 [mm] (A without pre-stretch):
+// reference radii lie in [0, A / L0].
+double reference_clamp_radius_mm(const Problem& problem);
 
 std::string to_string(StickRule rule);
 // The stick rule in words, e.g. "force:0.3 (held until the force reaches 0.3 N)".

@@ -305,3 +305,23 @@ def test_yeoh_law_from_its_coefficients_matches_cli(cli):
     assert pu.predict_puncture(plain).force_n == pu.predict_puncture(neo).force_n
     with pytest.raises(ValueError, match="c10_mpa"):
         pu.Material.yeoh(c10_mpa=0)
+
+
+def test_prestretched_membrane_matches_cli_and_its_linear_limit(cli):
+    problem = pu.Problem(preload=pu.Preload(prestretch=1.2))
+    assert repr(problem.preload) == "Preload(prestretch=1.2)"
+    assert problem.reference_clamp_radius_mm == pytest.approx(25.0 / 1.2, rel=1e-15)
+    prediction = pu.predict_puncture(problem)
+    ours = cli.json("puncture", "--prestretch", "1.2")
+    assert ours["inputs"]["prestretch"] == 1.2
+    assert prediction.force_n == pytest.approx(ours["puncture"]["force_n"], rel=1e-12)
+    # Small deflection: F / delta -> 2 pi T0 / ln(A / a), T0 = G H s_eq(L0) / L0 (docs/model.md
+    # section 16); at 0.05 mm the next order is ~1e-5 of the force.
+    h = 0.2
+    stress_mpa = float(problem.material.equibiaxial_stress_mpa(1.2))
+    stiffness = 2 * np.pi * h * stress_mpa / 1.2 / np.log(25.0 / 2.0)
+    frictionless = pu.Problem(preload=pu.Preload(prestretch=1.2), friction=0.0)
+    state = pu.solve_at_depth(frictionless, 0.05)
+    assert state.force_n / 0.05 == pytest.approx(stiffness, rel=1e-4)
+    with pytest.raises(ValueError, match="pre-stretch must be a finite number >= 1"):
+        pu.predict_puncture(pu.Problem(preload=pu.Preload(prestretch=0.9)))

@@ -29,10 +29,12 @@ enum class Layout {
   SlipWithSide,     // Part III, Part II on the side, Part I
 };
 
-// Everything normalised by the clamp radius A.
+// Everything normalised by the stress-free clamp radius A / L0 (A without pre-stretch).
 struct Scaled {
-  double a = 0.08;     // indenter radius
-  double depth = 0.0;  // indentation depth
+  double a = 0.08;                           // indenter radius
+  double depth = 0.0;                        // indentation depth
+  double clamp = 1.0;                        // current clamp radius: the pre-stretch L0
+  double held() const { return a / clamp; }  // reference radius held at the indenter's edge
 };
 
 // The mesh of a layout at a depth.  The numbering of the unknowns depends only on the layout,
@@ -49,8 +51,8 @@ Mesh build_mesh(Layout layout, const Scaled& s, const FeOptions& options,
   auto unknown = [&] { return unknown_slot(next++); };
   const Slot at_depth = fixed_slot(s.depth, true);
 
-  Slot corner_radius = fixed_slot(s.a);  // R at the corner: unknown when the membrane slides
-  Slot side_top_radius = corner_radius;  // R where Part I begins
+  Slot corner_radius = fixed_slot(s.held());  // R at the corner: unknown when it slides
+  Slot side_top_radius = corner_radius;       // R where Part I begins
   Slot part_one_first_z = at_depth;
   if (layout != Layout::Held) {
     corner_radius = unknown();
@@ -75,7 +77,7 @@ Mesh build_mesh(Layout layout, const Scaled& s, const FeOptions& options,
   MeshPart free_part{MembranePart::Free, true, n1, side_top_radius, fixed_slot(1.0), {}, {}};
   for (int i = 0; i <= n1 * p; ++i) {
     const bool first = i == 0, last = i == n1 * p;
-    free_part.r.push_back(first ? fixed_slot(s.a) : last ? fixed_slot(1.0) : unknown());
+    free_part.r.push_back(first ? fixed_slot(s.a) : last ? fixed_slot(s.clamp) : unknown());
     free_part.z.push_back(first ? part_one_first_z : last ? fixed_slot(0.0) : unknown());
   }
   mesh.parts.push_back(free_part);
@@ -100,18 +102,28 @@ const std::array<double, 7> kSamplePoints = [] {
 // The converged state in physical units.
 FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::VectorXd& x,
                    const fe::Assembly& assembly, const Scaled& s, FeContact contact) {
-  const double A = problem.geometry.clamp_radius_mm;
+  const double A = reference_clamp_radius_mm(problem);
   FeState state;
   state.contact = contact;
   state.order = mesh.order;
   state.depth_mm = s.depth * A;
-  state.normalized_force = assembly.reaction;
-  state.force_n = assembly.reaction * force_scale_n(problem);
+  state.normalized_force = assembly.reaction / s.clamp;
+  state.force_n = assembly.reaction * (force_scale_n(problem) / s.clamp);
   state.stored_energy_nmm = assembly.energy * 2.0 * std::numbers::pi *
                             problem.material.shear_modulus_mpa * problem.geometry.thickness_mm * A *
                             A;
+  // Held, the membrane under the tip is not meshed: it keeps the pre-stretch L0 (homogeneous) and
+  // stores W(L0, L0) over the disc R < a / L0 (nothing without pre-stretch).
+  if (contact == FeContact::Held && s.clamp != 1.0) {
+    const double i1 = first_invariant(s.clamp, s.clamp), i2 = second_invariant(s.clamp, s.clamp);
+    const double w = std::visit([&](const auto& law) { return law.derivatives(i1, i2).w; },
+                                problem.material.law);
+    const double r = s.held() * A;
+    state.stored_energy_nmm += std::numbers::pi * r * r * problem.geometry.thickness_mm *
+                               problem.material.shear_modulus_mpa * w;
+  }
   state.unknowns = mesh.unknowns;
-  state.corner_reference_radius_mm = radius_mm(problem.indenter);
+  state.corner_reference_radius_mm = s.held() * A;
   state.part_two_top_reference_radius_mm = state.corner_reference_radius_mm;
   for (const MeshPart& part : mesh.parts) {
     FePart out;
@@ -170,7 +182,7 @@ Eigen::VectorXd starting_guess(const Mesh& mesh, const Scaled& s, const FeState*
                                double clamp_radius) {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(mesh.unknowns);
   const double A = clamp_radius;
-  const double corner = previous ? previous->corner_reference_radius_mm / A : s.a * 0.999;
+  const double corner = previous ? previous->corner_reference_radius_mm / A : s.held() * 0.999;
   const double scale = previous ? s.depth / (previous->depth_mm / A) : 1.0;
   for (const MeshPart& part : mesh.parts)  // the moving corner first
     if (part.part == MembranePart::Tip) x[part.end.index] = corner;
@@ -179,7 +191,7 @@ Eigen::VectorXd starting_guess(const Mesh& mesh, const Scaled& s, const FeState*
     for (std::size_t i = 0; i < part.r.size(); ++i) {
       const double R =
           node_radius(part.logarithmic, part.elements * mesh.order, int(i), start, end);
-      double r = R, z = s.depth;
+      double r = R * s.clamp, z = s.depth;
       std::optional<fe::PointFields> old;
       if (previous)
         for (const FePart& p : previous->parts)
@@ -222,7 +234,7 @@ StepResult minimise(const Problem& problem, const Mesh& mesh, const Scaled& s, E
 StepResult solve_layout(const Problem& problem, Layout layout, const Scaled& s,
                         const FeState* previous, FeContact contact, const FeOptions& options) {
   const Mesh mesh = build_mesh(layout, s, options);
-  Eigen::VectorXd x = starting_guess(mesh, s, previous, problem.geometry.clamp_radius_mm);
+  Eigen::VectorXd x = starting_guess(mesh, s, previous, reference_clamp_radius_mm(problem));
   return minimise(problem, mesh, s, x, contact, options);
 }
 
@@ -238,7 +250,7 @@ StepResult solve_layout(const Problem& problem, Layout layout, const Scaled& s,
 // (the discrete tangency condition alone places L* only to O(h), the force to O(h^2)).
 StepResult solve_wrapped(const Problem& problem, const Scaled& s, const FeState& previous,
                          FeContact contact, const FeOptions& options, bool precise) {
-  const double A = problem.geometry.clamp_radius_mm;
+  const double A = reference_clamp_radius_mm(problem);
   const double corner = previous.corner_reference_radius_mm / A;
   double length =
       previous.part_two
@@ -427,7 +439,7 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
         "the finite-element method is implemented for the flat punch only, not the " +
             describe(problem.indenter));
   check_options(options);
-  const double A = problem.geometry.clamp_radius_mm;
+  const double A = reference_clamp_radius_mm(problem);
   double last = 0.0;
   for (double d : depths_mm) {
     if (!std::isfinite(d) || d <= last)
@@ -437,6 +449,7 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
   }
   Scaled s;
   s.a = radius_mm(problem.indenter) / A;
+  s.clamp = problem.preload.prestretch;
   Layout layout = contact == FeContact::Held ? Layout::Held : Layout::SlipWithoutSide;
   std::vector<FeState> states;
   std::optional<FeState> previous;

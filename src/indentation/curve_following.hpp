@@ -12,6 +12,7 @@
 
 #include "indentation/depth_newton.hpp"
 #include "indentation/puncture_search.hpp"
+#include "indentation/solver_scales.hpp"
 #include "puncture/loading_curve.hpp"
 
 namespace puncture::detail {
@@ -52,8 +53,9 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
                   const StageBoundary& boundary, double end_depth, bool has_switch,
                   const std::optional<ScaledSolution>& change, const CurveOptions& curve,
                   LoadingCurve& out) {
-  const double scale = force_scale_n(p);
-  const double big_a = p.geometry.clamp_radius_mm;
+  const SolverScales units = solver_scales(p);
+  const double scale = units.force_n;
+  const double big_a = units.length_mm;
   const auto& contact = shooting.contact();
   const FailureCriterion criterion = failure_criterion(p);
   DepthNewton<Shooting> newton(shooting, curve_tol);
@@ -83,7 +85,8 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
       // Seed a new segment with one solve at a known force: a small one at the start of the
       // curve (the power-law predictor carries it to the first depth), the held force at the
       // stick -> slip switch.
-      const double f_seed = out.points.size() > 1 ? out.points.back().normalized_force : 1e-4;
+      const double f_seed =
+          out.points.size() > 1 ? out.points.back().normalized_force * units.prestretch : 1e-4;
       const auto seed = shooting.solve(stage, f_seed);
       if (seed.ok()) {
         predictor.history = {{seed.depth, seed.f, seed.parameter}};
@@ -132,7 +135,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     CurvePoint pt;
     pt.depth_mm = depth;
     pt.force_n = sol->f * scale;
-    pt.normalized_force = sol->f;
+    pt.normalized_force = units.normalized_force(sol->f);
     pt.stage = stage;
     pt.configuration = sol->configuration;
     pt.part_three_stretch = sol->part_three_stretch;
@@ -169,8 +172,9 @@ template <class Shooting>
 LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
                                const CurveOptions& curve, const SolverOptions& options) {
   LoadingCurve out;
-  const double scale = force_scale_n(p);
-  const double big_a = p.geometry.clamp_radius_mm;
+  const SolverScales units = solver_scales(p);
+  const double scale = units.force_n;
+  const double big_a = units.length_mm;
   const auto switch_point = locate_switch(p, shooting);
   const StageBoundary& boundary = switch_point.boundary;
   if (boundary.status != Status::Converged) {

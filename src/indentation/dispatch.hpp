@@ -14,11 +14,12 @@
 
 namespace puncture::detail {
 
-inline ShootingSettings shooting_settings(const SolverOptions& o) {
+inline ShootingSettings shooting_settings(const SolverOptions& o, double prestretch = 1.0) {
   return {{o.integration_rel_tol, o.integration_abs_tol, o.max_steps},
           o.shooting_tol,
           o.max_shooting_iterations,
-          o.field_points};
+          o.field_points,
+          prestretch};
 }
 
 // Each indenter shape (an alternative of Indenter): its contact model, and that model's settings
@@ -26,13 +27,13 @@ inline ShootingSettings shooting_settings(const SolverOptions& o) {
 template <class Law>
 FlatPunchContact<Law> contact_model_of(const FlatPunch&);  // declared for its type only
 inline FlatPunchSettings contact_settings(const Problem& p, const FlatPunch& punch) {
-  return {punch.radius_mm / p.geometry.clamp_radius_mm, p.friction, p.part_two_equation};
+  return {punch.radius_mm / reference_clamp_radius_mm(p), p.friction, p.part_two_equation};
 }
 
 template <class Law>
 SphereTippedContact<Law> contact_model_of(const SphereTipped&);  // declared for its type only
 inline SphereTippedSettings contact_settings(const Problem& p, const SphereTipped& probe) {
-  return {probe.radius_mm / p.geometry.clamp_radius_mm, p.friction};
+  return {probe.radius_mm / reference_clamp_radius_mm(p), p.friction};
 }
 
 template <class Law, class Shape>
@@ -42,7 +43,7 @@ using ContactModelOf = decltype(contact_model_of<Law>(std::declval<const Shape&>
 // the same type.
 template <class Fn>
 decltype(auto) with_shooting(const Problem& problem, const SolverOptions& options, Fn&& fn) {
-  const ShootingSettings settings = shooting_settings(options);
+  const ShootingSettings settings = shooting_settings(options, problem.preload.prestretch);
   return std::visit(
       [&](const auto& law, const auto& shape) -> decltype(auto) {
         using Contact = ContactModelOf<std::decay_t<decltype(law)>, std::decay_t<decltype(shape)>>;

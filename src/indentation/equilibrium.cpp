@@ -66,7 +66,7 @@ Equilibrium solve_at_force(const Problem& problem, double force_n, Stage stage,
   if (!std::isfinite(force_n) || force_n < 0.0)
     throw InvalidInput("force_n",
                        fmt::format("force must be a finite number >= 0 N, got {}", force_n));
-  const double f = force_n / force_scale_n(problem);
+  const double f = force_n / detail::solver_scales(problem).force_n;
   return detail::reporting_failures<Equilibrium>([&] {
     return detail::with_shooting(problem, options, [&](const auto& shooting) {
       return detail::to_physical(
@@ -81,7 +81,7 @@ Equilibrium solve_at_depth(const Problem& problem, double depth_mm, Stage stage,
   if (!std::isfinite(depth_mm) || depth_mm < 0.0)
     throw InvalidInput("depth_mm",
                        fmt::format("depth must be a finite number >= 0 mm, got {}", depth_mm));
-  const double d = depth_mm / problem.geometry.clamp_radius_mm;
+  const double d = depth_mm / detail::solver_scales(problem).length_mm;
   return detail::reporting_failures<Equilibrium>([&] {
     return detail::with_shooting(problem, options, [&](const auto& shooting) {
       return detail::to_physical(

@@ -32,7 +32,7 @@ struct FreeStart {
 struct FreePartRun {
   bool ok = false;
   bool turned_back = false;  // stopped where the meridian turned back towards the axis
-  double residual = 0.0;     // lambda2(A) - 1
+  double residual = 0.0;     // lambda2 - L0 at the clamp
   double height = 0.0;
   double max_i1 = 0.0;
   double max_i1_r = 0.0;
@@ -48,6 +48,8 @@ class FreePart {
   const Law& law() const { return law_; }
   const ShootingSettings& settings() const { return s_; }
   double locking_i1() const { return locking_i1_; }
+  // The clamp's hoop stretch L0, also the stretch of material held where it touched.
+  double prestretch() const { return s_.prestretch; }
 
   // Part I at force f from `start` to the clamp; with `samples`, the solution is sampled.
   // Without `find_maximum` the largest I1 is left out (the shooting's residuals need only the
@@ -73,9 +75,9 @@ class FreePart {
           }
           return true;
         });
-    // A Part I that fails (locks) on its way with the hoop stretch already below 1 has collapsed
-    // towards the axis: it belongs to the negative side of the clamp residual as well.
-    if (!run.ok && last_l2 < 1.0) run.turned_back = true;
+    // A Part I that fails (locks) on its way with the hoop stretch already below the clamp's has
+    // collapsed towards the axis: it belongs to the negative side of the clamp residual as well.
+    if (!run.ok && last_l2 < s_.prestretch) run.turned_back = true;
     if (samples)
       for (const auto& [r, y] :
            even_samples(system, knots, std::max(1, s_.field_points), s_.integration))
@@ -88,7 +90,7 @@ class FreePart {
       run.max_i1_r = found.r;
       run.max_i1_radius = found.state[2] * found.r;  // r = lambda2 R
     }
-    run.residual = run.turned_back ? kTurnedBack : x[2] - 1.0;
+    run.residual = run.turned_back ? kTurnedBack : x[2] - s_.prestretch;
     run.height = x[3];
     return run;
   }

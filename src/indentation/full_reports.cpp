@@ -60,7 +60,16 @@ std::string full_report(const Problem& p) {
   std::string out = "Inputs\n";
   line(out, "clamp radius A", num(g.clamp_radius_mm) + " mm");
   line(out, "indenter", describe(p.indenter));
-  line(out, "thickness H", num(g.thickness_mm) + " mm");
+  line(out, "thickness H", num(g.thickness_mm) + " mm (stress-free)");
+  const double l0 = p.preload.prestretch;
+  line(out,
+       "pre-stretch L0",
+       l0 == 1.0 ? std::string("1 (mounted stress-free)")
+                 : fmt::format("{} (equibiaxial: the stress-free disc of radius {} mm clamped at "
+                               "A; I1 = {} before indentation)",
+                               num(l0),
+                               num(reference_clamp_radius_mm(p)),
+                               num(2.0 * l0 * l0 + 1.0 / (l0 * l0 * l0 * l0))));
   line(out, "material", describe(p.material));
   line(out, "friction mu'", num(p.friction));
   line(out, "critical I1", num(p.critical_i1));

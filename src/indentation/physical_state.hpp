@@ -9,6 +9,7 @@
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/membrane_fields.hpp"
 #include "indentation/scaled_solution.hpp"
+#include "indentation/solver_scales.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/problem.hpp"
 
@@ -18,13 +19,14 @@ template <class Contact>
 Equilibrium to_physical(const Problem& p, const Contact& contact, const ScaledSolution& sol,
                         Stage stage, const SolverOptions& options) {
   Equilibrium e;
-  const double big_a = p.geometry.clamp_radius_mm;
+  const SolverScales units = solver_scales(p);
+  const double big_a = units.length_mm;
   e.status = sol.status;
   e.message = sol.message;
   e.configuration = sol.configuration;
   e.stage = stage;
-  e.normalized_force = sol.f;
-  e.force_n = sol.f * force_scale_n(p);
+  e.normalized_force = units.normalized_force(sol.f);
+  e.force_n = sol.f * units.force_n;
   e.depth_mm = sol.depth * big_a;
   e.part_three_stretch = sol.part_three_stretch;
   e.corner_reference_radius_mm = sol.r_corner * big_a;

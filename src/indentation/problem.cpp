@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "mechanics/membrane_validation.hpp"
+#include "puncture/membrane_stress.hpp"
 
 namespace puncture {
 
@@ -97,6 +98,22 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
              "double precision; use --stick always for a fully held membrane), got {}",
              p.friction)});
   detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
+  const double l0 = p.preload.prestretch;
+  if (!std::isfinite(l0) || l0 < 1.0)
+    errors.push_back(
+        {"preload.prestretch",
+         fmt::format("pre-stretch must be a finite number >= 1 (below 1 the clamped membrane is "
+                     "compressed: it wrinkles, outside membrane theory), got {}",
+                     l0)});
+  else if (const double i1 = first_invariant(l0, l0);
+           std::isfinite(p.critical_i1) && i1 >= p.critical_i1)
+    errors.push_back(
+        {"preload.prestretch",
+         fmt::format("pre-stretch {:g} gives I1 = {:.6g} before indentation, at or above the "
+                     "critical I1 {:g}: the membrane would fail as it is mounted",
+                     l0,
+                     i1,
+                     p.critical_i1)});
   const auto& s = p.stick;
   // The sphere-tipped probe is solved sliding only (docs/model.md, §15): a stick stage is
   // refused rather than answered as sliding.
@@ -140,6 +157,10 @@ void validate(const Problem& problem) {
 double force_scale_n(const Problem& p) {
   return 2.0 * boost::math::constants::pi<double>() * p.material.shear_modulus_mpa *
          p.geometry.thickness_mm * p.geometry.clamp_radius_mm;
+}
+
+double reference_clamp_radius_mm(const Problem& p) {
+  return p.geometry.clamp_radius_mm / p.preload.prestretch;
 }
 
 std::string to_string(StickRule rule) {

@@ -55,8 +55,9 @@ SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
   SwitchPoint out;
   StageBoundary& b = out.boundary;
   b.status = Status::Converged;  // unless the stick stage cannot reach its switch point
-  const double scale = force_scale_n(p);
-  const double big_a = p.geometry.clamp_radius_mm;
+  const SolverScales units = solver_scales(p);
+  const double scale = units.force_n;
+  const double big_a = units.length_mm;
   switch (p.stick.rule) {
     case StickRule::None:
       b.first_stage = Stage::Slip;
@@ -105,8 +106,9 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
                                  bool& at_switch) {
   at_switch = false;
   PuncturePrediction out;
-  const double scale = force_scale_n(p);
-  const double big_a = p.geometry.clamp_radius_mm;
+  const SolverScales units = solver_scales(p);
+  const double scale = units.force_n;
+  const double big_a = units.length_mm;
   const FailureCriterion criterion = failure_criterion(p);
   const StageBoundary& boundary = switch_point.boundary;
   if (!boundary.ok()) {
@@ -233,7 +235,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   out.status = Status::Converged;
   out.state = to_physical(p, shooting.contact(), sol, stage, options);
   out.force_n = out.state.force_n;
-  out.normalized_force = sol.f;
+  out.normalized_force = units.normalized_force(sol.f);
   out.depth_mm = out.state.depth_mm;
   out.stage = stage;
   out.configuration = sol.configuration;

@@ -1,7 +1,8 @@
 #pragma once
-// A solution of the indentation problem in normalised variables (lengths / A, stresses / G,
-// force f = F / (2 pi G H A)), whatever the indenter, and the settings of the shooting that
-// finds it.
+// A solution of the indentation problem in normalised variables, whatever the indenter, and the
+// settings of the shooting that finds it.  Lengths are normalised by the stress-free clamp
+// radius A / L0 (A without pre-stretch; SolverScales), stresses by G, the force f by
+// 2 pi G H A / L0.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,6 +20,9 @@ struct ShootingSettings {
   double shooting_tol;
   int max_iterations;
   int field_points;  // intervals between the samples of a recorded part (even_samples)
+  // The clamp condition lambda2 = L0 at R = 1, and the stretch of material the indenter holds
+  // where it touched: the pre-stretch (1 for a membrane mounted stress-free).
+  double prestretch = 1.0;
 };
 
 // Part I sample: R, t, lambda1, lambda2, h.  Part II sample: R, lambda1, y.
@@ -29,7 +33,7 @@ struct ScaledSolution {
   Status status = Status::NoConvergence;
   std::string message;
   Configuration configuration = Configuration::Unloaded;
-  double f = 0.0;          // F / (2 pi G H A)
+  double f = 0.0;          // F / (2 pi G H A / L0)
   double parameter = 0.0;  // the configuration's shooting parameter (see the contact model)
   double part_three_stretch = 1.0;
   double r_corner = 0.0;         // reference radius of the material at the corner
@@ -42,7 +46,7 @@ struct ScaledSolution {
   double max_i1 = 3.0;         // largest I1 in Parts I and II
   double max_i1_r = 0.0;       // ... at this reference radius
   double max_i1_radius = 0.0;  // ... and this current radius
-  double residual = 0.0;       // lambda2(A) - 1
+  double residual = 0.0;       // lambda2 - L0 at the clamp
   int evaluations = 0;
   bool integrated = false;    // every part was integrated (residual and depth are defined)
   double shooting_tol = 0.0;  // the clamp tolerance it was judged against

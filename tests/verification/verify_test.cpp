@@ -39,6 +39,27 @@ TEST(Verify, PassesOnThePapersMembraneWithEveryCheck) {
   EXPECT_GT(calls, 5);
 }
 
+// Pre-stretched (L0 = 1.2): the same checks, the work against the energy stored beyond the flat
+// pre-stretched membrane's, and the small-deflection rows against the pre-tensioned membrane's
+// linear stiffness (docs/model.md §16) instead of Foppl's cubic law.
+TEST(Verify, PassesOnAPrestretchedMembrane) {
+  VerifyOptions options;
+  options.elements = 64;
+  options.depths = 2;
+  Problem p;
+  p.preload.prestretch = 1.2;
+  const VerificationReport r = verify(p, options);
+  for (const auto& c : r.checks)
+    EXPECT_EQ(c.verdict, Verdict::Pass) << c.group << " " << c.quantity << " " << c.condition
+                                        << ": " << c.difference << " (" << c.note << ")";
+  EXPECT_TRUE(r.ok());
+  const std::string work = "work of F = stored energy - flat pre-stretched energy [N mm]";
+  EXPECT_EQ(count_quantity(r, "frictionless", work), 1);
+  EXPECT_EQ(count_quantity(r, "held at the edge", work), 1);
+  EXPECT_EQ(count_quantity(r, "small deflection", "F / delta [N/mm], held edge, pre-tensioned"), 1);
+  EXPECT_EQ(r.count(Verdict::Pass), int(r.checks.size()));
+}
+
 // With mu' = 0 the printed Eq. (18) keeps s1 constant along Part II, the energy R s1
 // (docs/model.md §4): once the membrane wraps the side the forces differ by percents.
 TEST(Verify, FailsForThePrintedPartTwoEquation) {

@@ -2,11 +2,11 @@
 // The sharp flat-ended cylindrical punch of the paper: its contact model (contact_model.hpp).
 // Three membrane parts: Part III under the flat tip (homogeneous, equibiaxial), Part II wrapped
 // on the cylindrical side (with Coulomb friction), and the free Part I.  Configurations:
-//   Stick               membrane held at the indenter's edge, Part III unstretched
+//   Stick               membrane held at the indenter's edge, Part III at the pre-stretch L0
 //   SlipWithoutPartTwo  Part III stretched, capstan across the corner, Part I from the corner
 //   SlipWithPartTwo     Part III, the corner wrapped by pi/2, Part II on the side, then Part I
 // and their shooting parameters p:
-//   Stick               lambda1 at the indenter's edge (R = a, lambda2 = 1)
+//   Stick               t, the horizontal line tension at the edge (R = a / L0, lambda2 = L0)
 //   SlipWithoutPartTwo  the Part III stretch Lambda
 //   SlipWithPartTwo     lambda2 where Part I leaves the indenter's side (> a / A; it can be
 //                       below 1 when material from beyond the indenter's radius climbs its side)
@@ -56,7 +56,7 @@ inline double corner_slope(double kappa, double mu) {
 }
 
 struct FlatPunchSettings {
-  double a;   // indenter radius / clamp radius
+  double a;   // indenter radius / stress-free clamp radius A / L0
   double mu;  // Coulomb friction coefficient on the indenter
   PartTwoEquation equation;
 };
@@ -81,17 +81,18 @@ class FlatPunchContact {
   }
 
   // Held at the edge, the parameter is t >= 0, the horizontal component of the line tension
-  // R s1 = sqrt(f^2 + t^2) where Part I leaves the edge (R = a, lambda2 = 1), not the edge
-  // stretch: the end of the held branch is the vertical exit t = 0, where the clamp residual is
-  // linear in t but goes as the square root of the stretch's distance from the vertical exit's;
-  // shooting on the stretch, that distance falls below an ulp (and the clamp residual stalls
-  // ~1e-8) while t still resolves it.
+  // R s1 = sqrt(f^2 + t^2) where Part I leaves the edge (R = a / L0, lambda2 = L0: the material
+  // the edge touched, at the pre-stretch), not the edge stretch: the end of the held branch is
+  // the vertical exit t = 0, where the clamp residual is linear in t but goes as the square root
+  // of the stretch's distance from the vertical exit's; shooting on the stretch, that distance
+  // falls below an ulp (and the clamp residual stalls ~1e-8) while t still resolves it.
   std::optional<FreeStart> held_start(double f, double t) const {
     if (!(t >= 0.0) || !std::isfinite(t)) return std::nullopt;
-    const auto l1 = invert_radial_stress(law_, std::hypot(f, t) / s_.a, 1.0);
-    if (!l1 || !(first_invariant(*l1, 1.0) < locking_i1_)) return std::nullopt;
+    const double l0 = part_one_.prestretch(), r0 = held_radius();
+    const auto l1 = invert_radial_stress(law_, std::hypot(f, t) / r0, l0);
+    if (!l1 || !(first_invariant(*l1, l0) < locking_i1_)) return std::nullopt;
     return FreeStart{
-        {t, *l1, 1.0, 0.0}, s_.a, std::atan2(f, t), std::numeric_limits<double>::infinity()};
+        {t, *l1, l0, 0.0}, r0, std::atan2(f, t), std::numeric_limits<double>::infinity()};
   }
 
   std::optional<FreeStart> free_start(Configuration c, double f, double p) const {
@@ -135,7 +136,8 @@ class FlatPunchContact {
   bool attach(Configuration c, const FreeStart& st, double p, bool record, ScaledSolution& sol,
               bool maxima = true) const {
     if (c == Configuration::Stick) {
-      sol.r_corner = s_.a;
+      sol.r_corner = held_radius();
+      sol.part_three_stretch = part_one_.prestretch();
       return true;
     }
     if (c == Configuration::SlipWithoutPartTwo) {
@@ -332,19 +334,21 @@ class FlatPunchContact {
     return stage == Stage::Stick ? stick_plan(f, counted) : slip_plan(f, counted);
   }
 
-  // The flat membrane: Part III under the tip, unstretched, and the rest Part I, from the
+  // The flat membrane at its pre-stretch: Part III under the tip, and the rest Part I, from the
   // indenter's edge to the clamp, sampled like a loaded Part I (at least field_points steps,
   // both ends included).
   ScaledSolution unloaded(bool record) const {
     ScaledSolution flat;
     flat.status = Status::Converged;
-    flat.r_corner = flat.r_top = s_.a;
+    const double l0 = part_one_.prestretch(), edge = held_radius();
+    flat.r_corner = flat.r_top = edge;
+    flat.part_three_stretch = l0;
     flat.configuration = Configuration::Unloaded;
     if (record) {
       const int n = std::max(1, part_one_.settings().field_points);
       for (int k = 0; k <= n; ++k) {
-        const double r = k == n ? 1.0 : s_.a + (1.0 - s_.a) * k / n;
-        flat.part_one.push_back({r, 0.0, 1.0, 1.0, 0.0});
+        const double r = k == n ? 1.0 : edge + (1.0 - edge) * k / n;
+        flat.part_one.push_back({r, 0.0, l0, l0, 0.0});
       }
     }
     return flat;
@@ -572,6 +576,9 @@ class FlatPunchContact {
   }
 
  private:
+  // Reference radius of the material at the indenter's edge before it slides: a / L0.
+  double held_radius() const { return s_.a / part_one_.prestretch(); }
+
   // Part II is sampled as Part I is (FreePart).
   int field_intervals() const { return std::max(1, part_one_.settings().field_points); }
 

@@ -39,7 +39,7 @@
 namespace puncture::detail {
 
 struct SphereTippedSettings {
-  double a;   // tip (and cylinder) radius / clamp radius
+  double a;   // tip (and cylinder) radius / stress-free clamp radius A / L0
   double mu;  // Coulomb friction coefficient (on the hemisphere; the side only without)
 };
 
@@ -418,16 +418,18 @@ class SphereTippedContact {
     return plan;
   }
 
-  // The flat membrane: all of it Part I, from the pole to the clamp.
+  // The flat membrane, at its pre-stretch: all of it Part I, from the pole to the clamp.
   ScaledSolution unloaded(bool record) const {
     ScaledSolution flat;
     flat.status = Status::Converged;
     flat.configuration = Configuration::Unloaded;
+    const double l0 = part_one_.prestretch();
+    flat.part_three_stretch = l0;
     if (record) {
       const int n = std::max(1, part_one_.settings().field_points);
       for (int k = 0; k <= n; ++k) {
         const double r = k == n ? 1.0 : static_cast<double>(k) / n;
-        flat.part_one.push_back({r, 0.0, 1.0, 1.0, 0.0});
+        flat.part_one.push_back({r, 0.0, l0, l0, 0.0});
       }
     }
     return flat;
