@@ -32,7 +32,8 @@ enum class StickRule {
   Force,        // held until the indenter force reaches `threshold` [N]
   Depth,        // held until the indentation depth reaches `threshold` [mm]
   EdgeTension,  // held by adhesion until the radial line tension at the edge reaches
-                // `threshold` [N/mm], the adhesive strength of the edge
+                // `threshold` [N/mm], the adhesive strength of the edge (pre-stretched: the
+                // tension beyond the pre-tension, which the membrane under the tip carries)
   Always,       // never slides (fully stuck, the infinite-friction limit)
 };
 

@@ -75,12 +75,16 @@ SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
     at_switch = shooting.solve(Stage::Stick, p.stick.threshold / scale);
   } else if (p.stick.rule == StickRule::Depth) {
     at_switch = shooting.solve_at_depth(Stage::Stick, p.stick.threshold / big_a);
-  } else {  // EdgeTension: s1 H at the edge [N/mm] reaches the threshold
+  } else {  // EdgeTension: s1 H at the edge [N/mm] beyond the pre-tension reaches the threshold
     const double target =
         p.stick.threshold / (p.material.shear_modulus_mpa * p.geometry.thickness_mm);
+    // The held membrane under the tip carries the pre-tension s_eq(L0) itself (docs/model.md §16):
+    // the adhesion holds what the edge carries beyond it (nothing added without pre-stretch).
+    const double l0 = p.preload.prestretch;
+    const double pretension = l0 == 1.0 ? 0.0 : membrane_stress(shooting.contact().law(), l0, l0).s1;
     const auto f =
         first_force_where(shooting, Stage::Stick, 0.0, -target, [&](const ScaledSolution& s) {
-          return s.edge_s1 - target;
+          return s.edge_s1 - pretension - target;
         });
     if (f) at_switch = shooting.solve(Stage::Stick, *f);
   }

@@ -22,13 +22,17 @@ inline double uniform(std::mt19937_64& gen, double lo, double hi) {
 
 // The laws drawn: the paper's three, or Yeoh's alone.
 enum class Laws { Paper, Yeoh };
+// How the membrane is mounted: stress-free, or pre-stretched by L0 in [1.001, 3] (log-uniform in
+// L0 - 1), with the mounted I1 at most half the critical one.
+enum class Mounting { StressFree, Prestretched };
 
 // Case `index` of the sweep with `seed`: clamp 5-100 mm, a/A 1e-3-0.5, H 0.01-2 mm,
 // G 0.005-5 MPa, Gent (J_lim 10-1000), neo-Hookean or Mooney-Rivlin (alpha 0-0.5) -- or Yeoh
 // (C20/G 1e-4-0.1, C30/G 1e-6-1e-2, each zero a fifth of the time) --, friction 0-10 (a quarter
 // frictionless), every stick rule, both Part II equations, and a critical I1 between 5 and 200
 // below the law's locking value.
-inline Problem random_membrane(std::uint64_t seed, int index, Laws laws = Laws::Paper) {
+inline Problem random_membrane(std::uint64_t seed, int index, Laws laws = Laws::Paper,
+                               Mounting mounting = Mounting::StressFree) {
   std::mt19937_64 gen(seed * 1000003u + static_cast<std::uint64_t>(index));
   Problem p;
   p.geometry.clamp_radius_mm = log_uniform(gen, 5.0, 100.0);
@@ -79,6 +83,13 @@ inline Problem random_membrane(std::uint64_t seed, int index, Laws laws = Laws::
     default:
       p.stick = {StickRule::Always, 0.0};
       break;
+  }
+  // Drawn last, so that the stress-free sweeps keep their membranes.
+  if (mounting == Mounting::Prestretched) {
+    const double l0 = 1.0 + log_uniform(gen, 1e-3, 2.0);
+    // 2 L0^2 + L0^-4 <= I1c / 2 holds for L0 <= sqrt(I1c / 4) (the L0^-4 term is below 1).
+    const double cap = std::sqrt(std::max(0.25 * p.critical_i1 - 0.5, 1.0));
+    p.preload.prestretch = std::min(l0, cap);
   }
   return p;
 }

@@ -35,11 +35,12 @@ std::string reason(const Outcome& o) {
 
 std::string summary_of(const Problem& p) {
   return fmt::format(
-      "A = {} mm, a = {} mm, H = {} mm, G = {} MPa, {}, friction {}, critical I1 {}, stick {}, "
-      "{}",
+      "A = {} mm, a = {} mm, H = {} mm, L0 = {}, G = {} MPa, {}, friction {}, critical I1 {}, "
+      "stick {}, {}",
       p.geometry.clamp_radius_mm,
       radius_mm(p.indenter),
       p.geometry.thickness_mm,
+      p.preload.prestretch,
       p.material.shear_modulus_mpa,
       describe(p.material),
       p.friction,
@@ -50,12 +51,12 @@ std::string summary_of(const Problem& p) {
 
 // Every membrane of the sweep gives a converged state with finite numbers, or a physical
 // failure whose reason is confirmed independently; none fails numerically.
-void sweep(std::uint64_t seed, Laws laws) {
+void sweep(std::uint64_t seed, Laws laws, Mounting mounting = Mounting::StressFree) {
   const int cases = cases_from_environment(300);
   std::map<std::string, int> counts;
   int numerical = 0, converged = 0, unconfirmed = 0;
   for (int k = 0; k < cases; ++k) {
-    const Problem p = random_membrane(seed, k, laws);
+    const Problem p = random_membrane(seed, k, laws, mounting);
     ASSERT_TRUE(validation_errors(p).empty()) << k << ": " << validation_errors(p).front().message;
     const PuncturePrediction at = predict_puncture(p);
     if (at.ok()) {
@@ -100,6 +101,11 @@ TEST(Reliability, RandomMembranesGiveAStateOrAPhysicalReason) { sweep(20261123, 
 // The Yeoh law over the same ranges.  10^4 membranes: 9696 converged, 304 physical (267 not
 // reached, 37 would wrap the side), all confirmed, none numerical.
 TEST(Reliability, RandomYeohMembranesGiveAStateOrAPhysicalReason) { sweep(20261125, Laws::Yeoh); }
+
+// Pre-stretched membranes (L0 up to 3) over the same ranges.
+TEST(Reliability, RandomPrestretchedMembranesGiveAStateOrAPhysicalReason) {
+  sweep(20261126, Laws::Paper, Mounting::Prestretched);
+}
 
 }  // namespace
 }  // namespace puncture::test

@@ -77,7 +77,9 @@ class FlatPunchContact {
   // Part III, a / A for the hoop stretch a / R at the top of Part II (R < A).
   double parameter_floor(Configuration configuration) const {
     if (configuration == Configuration::Stick) return 0.0;
-    return configuration == Configuration::SlipWithPartTwo ? s_.a : 1.0;
+    // Part III's stretch also exceeds a / (A / L0), which keeps its corner, at R = a / L,
+    // inside the clamp (that bound exceeds 1 only for a pre-stretched membrane with a > A / L0).
+    return configuration == Configuration::SlipWithPartTwo ? s_.a : std::max(1.0, s_.a);
   }
 
   // Held at the edge, the parameter is t >= 0, the horizontal component of the line tension
@@ -389,6 +391,10 @@ class FlatPunchContact {
     const auto onset = part_two_onset_stretch(f);
     if (!onset) return std::nullopt;
     if (std::isinf(*onset)) return 1.0;  // Part II at every stretch
+    // The vertical exit's corner, at R = a / L, would lie beyond the clamp (pre-stretched, a >
+    // A / L0): every admissible Part III stretch exits flatter, so there is no Part II.  The
+    // limit of the residual as that corner reaches the clamp, a - L0 < 0, stands in for it.
+    if (*onset <= s_.a) return s_.a - part_one_.prestretch();
     // Part I leaving the corner vertically at the onset stretch: the SlipWithPartTwo start with a
     // Part II of zero length (exactly R s1 = f, free of the round-off in the capstan balance).
     return residual(Configuration::SlipWithPartTwo, f, *onset);
@@ -640,6 +646,17 @@ class FlatPunchContact {
       plan.lo = *onset;
       plan.g_lo = g_onset;
       plan.cap = locking_radial_stretch(law_, 1.0);
+      if (*onset <= s_.a) {  // that exit's corner lies beyond the clamp: from the clamp inward
+        plan.lo = s_.a * (1.0 + 1e-9);
+        plan.g_lo = counted(Configuration::SlipWithoutPartTwo, plan.lo).value_or(kBeyondDomain);
+        if (!(plan.g_lo < 0.0)) {
+          plan.status = Status::NoConvergence;
+          plan.message =
+              "slip shooting: no Part III stretch with its corner inside the clamp has a "
+              "negative clamp residual";
+          return plan;
+        }
+      }
     } else {
       // Part II exists: shoot on lambda2 where Part I leaves the side (between 1 and the onset).
       // At the lowest top stretch, lambda2 -> a, Part I shrinks to the clamp and the residual
