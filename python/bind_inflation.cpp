@@ -108,11 +108,12 @@ std::string state_repr(const InflationState& s) {
 std::string problem_repr(const InflationProblem& p) {
   return fmt::format(
       "InflationProblem(clamp_radius_mm={:g}, thickness_mm={:g}, material='{}', "
-      "critical_i1={:g})",
+      "critical_i1={:g}, prestretch={:g})",
       p.clamp_radius_mm,
       p.thickness_mm,
       describe(p.material),
-      p.critical_i1);
+      p.critical_i1,
+      p.prestretch);
 }
 
 void bind_types(py::module_& m) {
@@ -120,21 +121,30 @@ void bind_types(py::module_& m) {
       m,
       "InflationProblem",
       "The membrane of an inflation (bulge) test: clamp radius A [mm], thickness H [mm],\n"
-      "material and the critical I1 at which it bursts.  InflationProblem.of(problem) takes\n"
-      "them from an indentation Problem.");
+      "material, the critical I1 at which it bursts and the equibiaxial pre-stretch L0 (>= 1:\n"
+      "the stress-free disc of radius A / L0 clamped at A).  InflationProblem.of(problem)\n"
+      "takes them from an indentation Problem.");
   problem
-      .def(py::init([](double a, double h, const Material& material, double critical_i1) {
-             return InflationProblem{a, h, material, critical_i1};
+      .def(py::init([](double a,
+                       double h,
+                       const Material& material,
+                       double critical_i1,
+                       double prestretch) {
+             return InflationProblem{a, h, material, critical_i1, prestretch};
            }),
            py::arg("clamp_radius_mm") = InflationProblem{}.clamp_radius_mm,
            py::arg("thickness_mm") = InflationProblem{}.thickness_mm,
            py::arg("material") = Material{},
-           py::arg("critical_i1") = InflationProblem{}.critical_i1)
+           py::arg("critical_i1") = InflationProblem{}.critical_i1,
+           py::arg("prestretch") = InflationProblem{}.prestretch)
       .def_static("of", &inflation_problem, py::arg("problem"), "The membrane of a Problem")
       .def_readwrite("clamp_radius_mm", &InflationProblem::clamp_radius_mm, "A [mm]")
       .def_readwrite("thickness_mm", &InflationProblem::thickness_mm, "H [mm]")
       .def_readwrite("material", &InflationProblem::material)
       .def_readwrite("critical_i1", &InflationProblem::critical_i1, "I1 at the burst")
+      .def_readwrite("prestretch",
+                     &InflationProblem::prestretch,
+                     "equibiaxial pre-stretch L0 (>= 1); the flat state's pole stretch")
       .def(
           "validation_errors",
           [](const InflationProblem& p) { return validation_errors(p); },

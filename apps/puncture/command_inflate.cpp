@@ -59,7 +59,8 @@ void add_inflate_command(CLI::App& app, InflateFlags& f) {
           ->add_option("--pole-stretch",
                        f.pole_stretch,
                        "The state whose pole (centre) is stretched equibiaxially by\n"
-                       "this factor [dimensionless] (>= 1), with its fields")
+                       "this factor [dimensionless] (>= 1; >= L0 with --prestretch),\n"
+                       "with its fields")
           ->type_name("L");
   f.pressure_option->excludes(f.pole_stretch_option);
   f.command

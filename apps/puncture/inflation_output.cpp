@@ -130,6 +130,7 @@ json inputs_json(const InflationProblem& p) {
           {"thickness_mm", finite(p.thickness_mm, "thickness")},
           {"material", material_json(p.material)},
           {"critical_i1", finite(p.critical_i1, "critical I1")},
+          {"prestretch", finite(p.prestretch, "pre-stretch")},
           {"pressure_scale_mpa", finite(pressure_scale_mpa(p), "pressure scale")}};
 }
 
@@ -147,6 +148,10 @@ void inputs(std::string& out, const InflationProblem& p) {
   line(out, "thickness H", num(p.thickness_mm, "thickness") + " mm");
   line(out, "material", describe(p.material));
   line(out, "critical I1 (burst)", num(p.critical_i1, "critical I1"));
+  if (p.prestretch != 1.0)
+    line(out,
+         "pre-stretch L0",
+         num(p.prestretch, "pre-stretch") + " (stress-free disc of radius A / L0 clamped at A)");
   line(out,
        "pressure scale G H / A",
        num(pressure_scale_mpa(p), "pressure scale") + " MPa (normalised pressure = p / this)");

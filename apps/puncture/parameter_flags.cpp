@@ -12,13 +12,14 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 26> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 27> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
     {"preload.prestretch", "--prestretch"},
     {"clamp_radius_mm", "--clamp-radius"},
     {"thickness_mm", "--thickness"},
+    {"prestretch", "--prestretch"},
     {"material.shear_modulus_mpa", "--shear-modulus"},
     {"material.law.j_lim", "--jlim"},
     {"material.law.alpha", "--mr-alpha"},

@@ -94,8 +94,9 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      f.prestretch,
                      "Equibiaxial pre-stretch L0 [dimensionless] (>= 1): the stress-free\n"
                      "disc of radius A / L0 is stretched by L0 and clamped at radius A\n"
-                     "before indentation; H is its stress-free thickness, stretches and\n"
-                     "I1 count from it (1: mounted stress-free, the paper's case)")
+                     "before indentation (or inflation); H is its stress-free thickness,\n"
+                     "stretches and I1 count from it (1: mounted stress-free, the paper's\n"
+                     "case)")
           ->group(kGeometry)
           ->capture_default_str();
 
@@ -155,7 +156,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                  "  depth:<mm>    held until the indentation depth reaches <mm> [mm]\n"
                  "  edge-tension:<N/mm>\n"
                  "                held by adhesion until the radial line tension at\n"
-                 "                the indenter's edge reaches <N/mm> [N/mm]\n"
+                 "                the indenter's edge reaches <N/mm> [N/mm] (with\n"
+                 "                --prestretch: beyond the pre-tension)\n"
                  "  always        never slides (fully stuck)\n"
                  "Thresholds must be > 0, e.g. --stick force:0.5")
       ->group(kContact)
@@ -219,14 +221,11 @@ MaterialLaw make_law(const ProblemFlags& f) {
 InflationProblem make_inflation_problem(const ProblemFlags& f) {
   std::vector<std::string> errors;
   InflationProblem p;
-  if (f.prestretch_option && f.prestretch_option->count() > 0 && f.prestretch != 1.0)
-    errors.push_back(
-        "--prestretch: the inflation of a pre-stretched membrane is not implemented yet; "
-        "inflation starts from the stress-free membrane");
   p.clamp_radius_mm = f.clamp_radius_mm;
   p.thickness_mm = f.thickness_mm;
   p.material = material_of(f, errors);
   p.critical_i1 = f.critical_i1;
+  p.prestretch = f.prestretch;
   throw_if_invalid("invalid input:", errors, validation_errors(p));
   return p;
 }

@@ -31,6 +31,11 @@ struct InflationProblem {
   double thickness_mm = 0.2;      // undeformed thickness H [mm]
   Material material;              // G and the strain-energy law (default: the paper's Gent)
   double critical_i1 = 95.2;      // the membrane bursts when its largest I1 reaches this
+  // Equibiaxial pre-stretch L0 (>= 1): the stress-free disc of radius A / L0 is stretched by L0
+  // and clamped at radius A, then inflated (1: mounted stress-free).  Stretches, I1 and the
+  // pole stretch are measured from the stress-free disc, reference radii on it, and the stored
+  // energy includes the pre-stretch's.  The flat state's pole stretch is L0.
+  double prestretch = 1.0;
 };
 
 // The membrane of an indentation problem (clamp radius, thickness, material, critical I1).
@@ -38,7 +43,7 @@ InflationProblem inflation_problem(const Problem& problem);
 
 // Every problem with the input, each with the attribute it is about ("clamp_radius_mm",
 // "thickness_mm", "material.shear_modulus_mpa", "material.law.j_lim", "material.law.alpha",
-// "critical_i1") and a message giving the allowed range; empty if valid.
+// "critical_i1", "prestretch") and a message giving the allowed range; empty if valid.
 std::vector<ValidationError> validation_errors(const InflationProblem& problem);
 // Throws InvalidInput listing every problem.
 void validate(const InflationProblem& problem);
@@ -69,15 +74,16 @@ struct InflationState : Outcome {  // Converged, NoConvergence or BeyondLocking
   MembraneFields fields;  // when SolverOptions::record_fields; every part Free, deflection = height
 };
 
-// The equilibrium whose pole stretch is `pole_stretch` (>= 1).  Throws std::invalid_argument
-// for an invalid problem or a pole stretch that is not a finite number >= 1; a pole stretch at
+// The equilibrium whose pole stretch is `pole_stretch` (>= the pre-stretch, 1 by default).
+// Throws std::invalid_argument for an invalid problem or a pole stretch that is not a finite
+// number >= the pre-stretch; a pole stretch at
 // or beyond the Gent locking limit gives Status::BeyondLocking.
 InflationState inflate_at_pole_stretch(const InflationProblem& problem, double pole_stretch,
                                        const SolverOptions& options = {});
 
 struct InflationCurveOptions {
   int points = 100;               // states on the curve, equally spaced in pole stretch (>= 2)
-  double max_pole_stretch = 0.0;  // end of the curve (> 1); 0: at the burst
+  double max_pole_stretch = 0.0;  // end of the curve (> the pre-stretch); 0: at the burst
   int scan_points = 60;           // pole stretches scanned for pressure extrema (>= 8)
   // Called after each state of the curve with (done, total), if set.
   std::function<void(int, int)> progress;
@@ -117,7 +123,7 @@ InflationCurve inflation_curve(const InflationProblem& problem,
 // stretch; the largest I1 is not assumed to be at the pole).
 InflationBurst inflation_burst(const InflationProblem& problem, const SolverOptions& options = {});
 
-// The local maxima and minima of the pressure for pole stretches in (1, max_pole_stretch]:
+// The local maxima and minima of the pressure for pole stretches in (L0, max_pole_stretch]:
 // a scan of `scan_points` stretches, then a root of dp/dlambda0 (a four-point central
 // difference) by TOMS 748 in each bracket.  Converged with no extrema when the pressure is
 // monotone (e.g. Mooney-Rivlin with alpha = 0.1 up to its burst).

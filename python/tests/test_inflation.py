@@ -238,3 +238,20 @@ def test_mooney_rivlin_burst_lies_near_the_clamp_by_an_independent_solver():
     assert e.largest_i1_radius_fractions[0] == pytest.approx(fine[k], abs=1e-4)
     paper = pu.critical_i1_from_inflation([0.5 * l0], 0.5)
     assert not paper.from_membrane and paper.mean == pytest.approx(i1[0], rel=1e-7)
+
+
+def test_a_prestretched_membrane_inflates_from_its_pre_stretch():
+    problem = pu.InflationProblem(prestretch=1.2)
+    assert problem.prestretch == 1.2
+    flat = pu.inflate_at_pole_stretch(problem, 1.2)
+    assert flat.pressure_mpa == 0.0 and flat.fields.hoop_stretch[-1] == 1.2
+    assert flat.fields.reference_radius_mm[-1] == pytest.approx(25.0 / 1.2)
+    # Small pressure: the pre-tensioned membrane's linear law, volume = pi p A^4 / (8 T0) with
+    # T0 = G H s_eq(L0) / L0 (docs/model.md §16), to the relative error ~ the pole stretch's excess.
+    s = pu.inflate_at_pole_stretch(problem, 1.2 * (1 + 1e-6))
+    s_eq_mpa = pu.Material().equibiaxial_stress_mpa(1.2)  # G s_eq(L0), the paper's Gent
+    tension = 0.2 * s_eq_mpa / 1.2
+    assert s.volume_mm3 == pytest.approx(math.pi * s.pressure_mpa * 25.0**4 / (8 * tension), rel=1e-5)
+    with pytest.raises(ValueError, match="pre-stretch 1.2"):
+        pu.inflate_at_pole_stretch(problem, 1.1)
+    assert pu.InflationProblem.of(pu.Problem(preload=pu.Preload(prestretch=1.3))).prestretch == 1.3

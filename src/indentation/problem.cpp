@@ -64,6 +64,26 @@ void append_critical_i1_errors(std::vector<ValidationError>& errors, double crit
                      critical_i1)});
 }
 
+void append_prestretch_errors(std::vector<ValidationError>& errors, const char* parameter,
+                              double prestretch, double critical_i1) {
+  const double l0 = prestretch;
+  if (!std::isfinite(l0) || l0 < 1.0)
+    errors.push_back(
+        {parameter,
+         fmt::format("pre-stretch must be a finite number >= 1 (below 1 the clamped membrane is "
+                     "compressed: it wrinkles, outside membrane theory), got {}",
+                     l0)});
+  else if (const double i1 = first_invariant(l0, l0);
+           std::isfinite(critical_i1) && i1 >= critical_i1)
+    errors.push_back(
+        {parameter,
+         fmt::format("pre-stretch {:g} gives I1 = {:.6g} before it is loaded, at or above the "
+                     "critical I1 {:g}: the membrane would fail as it is mounted",
+                     l0,
+                     i1,
+                     critical_i1)});
+}
+
 void throw_if_invalid(const char* heading, const std::vector<ValidationError>& errors) {
   if (!errors.empty()) throw InvalidInput(errors, heading);
 }
@@ -98,22 +118,8 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
              "double precision; use --stick always for a fully held membrane), got {}",
              p.friction)});
   detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
-  const double l0 = p.preload.prestretch;
-  if (!std::isfinite(l0) || l0 < 1.0)
-    errors.push_back(
-        {"preload.prestretch",
-         fmt::format("pre-stretch must be a finite number >= 1 (below 1 the clamped membrane is "
-                     "compressed: it wrinkles, outside membrane theory), got {}",
-                     l0)});
-  else if (const double i1 = first_invariant(l0, l0);
-           std::isfinite(p.critical_i1) && i1 >= p.critical_i1)
-    errors.push_back(
-        {"preload.prestretch",
-         fmt::format("pre-stretch {:g} gives I1 = {:.6g} before indentation, at or above the "
-                     "critical I1 {:g}: the membrane would fail as it is mounted",
-                     l0,
-                     i1,
-                     p.critical_i1)});
+  detail::append_prestretch_errors(
+      errors, "preload.prestretch", p.preload.prestretch, p.critical_i1);
   const auto& s = p.stick;
   // The sphere-tipped probe is solved sliding only (docs/model.md, §15): a stick stage is
   // refused rather than answered as sliding.

@@ -23,9 +23,10 @@ InflationAtPressure inflate_at_pressure(const InflationProblem& problem, double 
         fmt::format("pressure must be a finite number >= 0 MPa, got {}", pressure_mpa));
   InflationAtPressure out;
   out.pressure_mpa = pressure_mpa;
-  const auto& law = problem.material.law;
+  const double flat = problem.prestretch;
   if (pressure_mpa == 0.0) {
-    out.states.push_back(detail::to_physical(problem, detail::solve_inflation(law, 1.0, options)));
+    out.states.push_back(
+        detail::to_physical(problem, detail::solve_inflation(problem, flat, options)));
     out.status = Status::Converged;
     return out;
   }
@@ -49,13 +50,15 @@ InflationAtPressure inflate_at_pressure(const InflationProblem& problem, double 
   }
   out.extrema = extrema.extrema;
 
-  const double target = pressure_mpa / pressure_scale_mpa(problem);
+  // In the solver's pressure unit (G H / (A / L0)).
+  const double scale = detail::solver_pressure_scale_mpa(problem);
+  const double target = pressure_mpa / scale;
   SolverOptions inner = options;
   inner.record_fields = false;
   double guess = 0.0;
   std::optional<detail::ScaledInflation> failure;
   auto pressure_at = [&](double l0) -> double {
-    auto s = detail::solve_inflation(law, l0, inner, guess);
+    auto s = detail::solve_inflation(problem, l0, inner, guess);
     if (!s.ok()) {
       failure = s;
       return 0.0;
@@ -63,16 +66,16 @@ InflationAtPressure inflate_at_pressure(const InflationProblem& problem, double 
     guess = s.pressure;
     return s.pressure;
   };
-  // The monotone pieces: [1, first extremum], ..., [last extremum, end].
-  std::vector<double> ends{1.0};
+  // The monotone pieces: [L0, first extremum], ..., [last extremum, end].
+  std::vector<double> ends{flat};
   std::vector<double> values{0.0};
   for (const auto& e : out.extrema) {
     ends.push_back(e.state.pole_stretch);
-    values.push_back(e.state.normalized_pressure);
+    values.push_back(e.state.normalized_pressure / flat);  // P A / (G H) in the solver's unit
   }
   ends.push_back(out.max_pole_stretch);
   values.push_back(pressure_at(out.max_pole_stretch));
-  double highest = 0.0, highest_at = 1.0;
+  double highest = 0.0, highest_at = flat;
   for (std::size_t k = 1; k < ends.size(); ++k) {
     if (failure) break;
     if (values[k] > highest) {
@@ -97,7 +100,7 @@ InflationAtPressure inflate_at_pressure(const InflationProblem& problem, double 
     if (failure) break;
     // A pressure equal to an extremum's ends two pieces: keep it once.
     if (!out.states.empty() && std::abs(out.states.back().pole_stretch - at) <= 1e-9 * at) continue;
-    auto s = detail::to_physical(problem, detail::solve_inflation(law, at, options, guess));
+    auto s = detail::to_physical(problem, detail::solve_inflation(problem, at, options, guess));
     if (!s.ok()) {
       out.status = s.status;
       out.message = fmt::format("the state at pole stretch {:g} failed: {}", at, s.message);
@@ -117,7 +120,7 @@ InflationAtPressure inflate_at_pressure(const InflationProblem& problem, double 
         "range is {:.6g} MPa, at pole stretch {:.6g}{}",
         out.max_pole_stretch,
         pressure_mpa,
-        highest * pressure_scale_mpa(problem),
+        highest * scale,
         highest_at,
         range.max_pole_stretch > 0.0 ? "" : " (the range ends at the burst)");
   else if (out.states.size() > 1)

@@ -14,8 +14,8 @@ namespace puncture {
 
 InflationBurst inflation_burst(const InflationProblem& problem, const SolverOptions& options) {
   validate(problem);
-  const auto& law = problem.material.law;
   const double critical = problem.critical_i1;
+  const double flat = problem.prestretch;
   InflationBurst out;
   SolverOptions inner = options;
   inner.record_fields = false;
@@ -24,7 +24,7 @@ InflationBurst inflation_burst(const InflationProblem& problem, const SolverOpti
   double guess = 0.0;
   std::optional<detail::ScaledInflation> failure;
   auto excess = [&](double l0) -> std::optional<double> {
-    auto s = detail::solve_inflation(law, l0, inner, guess);
+    auto s = detail::solve_inflation(problem, l0, inner, guess);
     if (!s.ok()) {
       failure = std::move(s);
       return std::nullopt;
@@ -34,10 +34,12 @@ InflationBurst inflation_burst(const InflationProblem& problem, const SolverOpti
   };
   // A coarse scan for the first crossing (the largest I1 need not grow monotonically).
   constexpr int kScan = 32;
-  double lo = 1.0, g_lo = 3.0 - critical, hi = upper, g_hi = 0.0;
+  // The flat state's I1 is 3 without pre-stretch (below the critical I1 by validation).
+  double lo = flat, g_lo = (flat == 1.0 ? 3.0 : first_invariant(flat, flat)) - critical;
+  double hi = upper, g_hi = 0.0;
   bool bracketed = false;
   for (int k = 1; k <= kScan; ++k) {
-    const double l0 = 1.0 + (upper - 1.0) * k / kScan;
+    const double l0 = flat + (upper - flat) * k / kScan;
     const auto g = excess(l0);
     if (!g) {
       out.message = fmt::format(
@@ -81,7 +83,7 @@ InflationBurst inflation_burst(const InflationProblem& problem, const SolverOpti
     }
     at = 0.5 * (bracket.first + bracket.second);
   }
-  out.state = detail::to_physical(problem, detail::solve_inflation(law, at, options, guess));
+  out.state = detail::to_physical(problem, detail::solve_inflation(problem, at, options, guess));
   out.status = out.state.status;
   if (!out.ok()) out.message = "the burst state could not be solved: " + out.state.message;
   return out;

@@ -1,5 +1,5 @@
-// The inflation curve: states equally spaced in pole stretch from flat to the burst (or a
-// given pole stretch), with the pressure extrema and the burst.
+// The inflation curve: states equally spaced in pole stretch from flat (the pre-stretch) to the
+// burst (or a given pole stretch), with the pressure extrema and the burst.
 #include <fmt/format.h>
 
 #include "inflation/scaled_inflation.hpp"
@@ -24,11 +24,12 @@ InflationCurve inflation_curve(const InflationProblem& problem, const InflationC
   SolverOptions inner = options;
   inner.record_fields = false;
   const int n = curve.points;
+  const double flat = problem.prestretch;
   double guess = 0.0;
   for (int k = 0; k < n; ++k) {
     const double l0 =
-        k == n - 1 ? out.end_pole_stretch : 1.0 + (out.end_pole_stretch - 1.0) * k / (n - 1);
-    auto s = detail::solve_inflation(problem.material.law, l0, inner, guess);
+        k == n - 1 ? out.end_pole_stretch : flat + (out.end_pole_stretch - flat) * k / (n - 1);
+    auto s = detail::solve_inflation(problem, l0, inner, guess);
     if (!s.ok()) {
       out.status = s.status;
       out.message = fmt::format("the curve stopped at pole stretch {:g}: {}", l0, s.message);

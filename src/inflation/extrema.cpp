@@ -34,10 +34,13 @@ void check_curve_options(const InflationProblem& problem, const InflationCurveOp
         fmt::format("scan points must be in the range 8 to 100000, got {}", curve.scan_points));
   const double m = curve.max_pole_stretch;
   const double lock = locking_pole_stretch(problem.material.law);
-  if (m != 0.0 && (!std::isfinite(m) || m <= 1.0))
-    throw InvalidInput(
-        "max_pole_stretch",
-        fmt::format("max pole stretch must be 0 (to the burst) or a finite number > 1, got {}", m));
+  const double flat = problem.prestretch;
+  if (m != 0.0 && (!std::isfinite(m) || m <= flat))
+    throw InvalidInput("max_pole_stretch",
+                       fmt::format("max pole stretch must be 0 (to the burst) or a finite number "
+                                   "> {:g} (the flat state's), got {}",
+                                   flat,
+                                   m));
   if (m != 0.0 && m >= lock)
     throw InvalidInput(
         "max_pole_stretch",
@@ -53,11 +56,11 @@ namespace {
 // Normalised pressure P(l0), or empty when the solver fails there.
 class PressureOfStretch {
  public:
-  PressureOfStretch(const MaterialLaw& law, const SolverOptions& options)
-      : law_(law), o_(differencing_options(options)) {}
+  PressureOfStretch(const InflationProblem& problem, const SolverOptions& options)
+      : problem_(problem), o_(differencing_options(options)) {}
 
   std::optional<double> operator()(double l0) {
-    const auto s = solve_inflation(law_, l0, o_, guess_);
+    const auto s = solve_inflation(problem_, l0, o_, guess_);
     if (!s.ok()) {
       failure_ = s;
       return std::nullopt;
@@ -68,7 +71,7 @@ class PressureOfStretch {
   const ScaledInflation& failure() const { return failure_; }
 
  private:
-  const MaterialLaw& law_;
+  const InflationProblem& problem_;
   SolverOptions o_;
   double guess_ = 0.0;
   ScaledInflation failure_;
@@ -136,15 +139,15 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
   detail::check_curve_options(problem, check);
 
   PressureExtrema out;
-  const auto& law = problem.material.law;
-  detail::PressureOfStretch pressure(law, options);
-  // The scan: P(1) = 0, then equally spaced pole stretches.
+  detail::PressureOfStretch pressure(problem, options);
+  // The scan: P(L0) = 0 at the flat state, then equally spaced pole stretches.
   const int n = scan_points;
+  const double flat = problem.prestretch;
   std::vector<double> l(n + 1), p(n + 1);
-  l[0] = 1.0;
+  l[0] = flat;
   p[0] = 0.0;
   for (int i = 1; i <= n; ++i) {
-    l[i] = 1.0 + (max_pole_stretch - 1.0) * i / n;
+    l[i] = flat + (max_pole_stretch - flat) * i / n;
     const auto v = pressure(l[i]);
     if (!v) {
       out.status = pressure.failure().status;
@@ -154,7 +157,7 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
     }
     p[i] = *v;
   }
-  const double scale = pressure_scale_mpa(problem);
+  const double scale = detail::solver_pressure_scale_mpa(problem);
   // The extremum at pole stretch `at` (its state started from the scanned pressure `guess`);
   // false, with `out` saying why, when that state cannot be solved.
   auto record = [&](ExtremumKind kind, double at, double slope, double curvature, double guess) {
@@ -162,7 +165,7 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
     e.kind = kind;
     e.pressure_slope_mpa = scale * slope;
     e.curvature_mpa = scale * curvature;
-    e.state = detail::to_physical(problem, detail::solve_inflation(law, at, options, guess));
+    e.state = detail::to_physical(problem, detail::solve_inflation(problem, at, options, guess));
     if (!e.state.ok()) {
       out.status = e.state.status;
       out.message = fmt::format(
@@ -177,7 +180,7 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
       const double left = p[i] - p[i - 1], right = p[i + 1] - p[i];
       if (!(left * right < 0.0)) continue;
       // The derivative's step: fine against the bracket, and clear of the flat state.
-      const double h = std::min(0.25 * (l[i] - l[i - 1]), 0.2 * (l[i - 1] - 1.0));
+      const double h = std::min(0.25 * (l[i] - l[i - 1]), 0.2 * (l[i - 1] - flat));
       auto d = [&](double x) { return detail::slope(pressure, x, h); };
       double lo = l[i - 1], hi = l[i + 1];
       double d_lo = d(lo), d_mid = d(l[i]), d_hi = d(hi);
@@ -212,7 +215,7 @@ PressureExtrema pressure_extrema(const InflationProblem& problem, double max_pol
     // central one (the error then 40 times smaller; the solves' 1e-12 noise, amplified by
     // ~10 / h, stays far below it).
     const double last = p[n] - p[n - 1];
-    const double h = 0.25 * std::min(0.25 * (l[n] - l[n - 1]), 0.2 * (l[n - 1] - 1.0));
+    const double h = 0.25 * std::min(0.25 * (l[n] - l[n - 1]), 0.2 * (l[n - 1] - flat));
     auto d = [&](double x) { return detail::backward_slope(pressure, x, h); };
     if (double d_hi = d(l[n]); last * d_hi < 0.0) {
       double lo = l[n - 1], hi = l[n];

@@ -12,7 +12,8 @@ InflationProblem inflation_problem(const Problem& problem) {
   return {problem.geometry.clamp_radius_mm,
           problem.geometry.thickness_mm,
           problem.material,
-          problem.critical_i1};
+          problem.critical_i1,
+          problem.preload.prestretch};
 }
 
 // The checks and words of validation_errors(const Problem&) (membrane_validation.hpp).
@@ -22,6 +23,7 @@ std::vector<ValidationError> validation_errors(const InflationProblem& p) {
   detail::require_positive(errors, "thickness_mm", "thickness", p.thickness_mm, "mm");
   detail::append_material_errors(errors, p.material);
   detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
+  detail::append_prestretch_errors(errors, "prestretch", p.prestretch, p.critical_i1);
   return errors;
 }
 

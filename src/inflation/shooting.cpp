@@ -1,5 +1,6 @@
 // One inflated equilibrium at a given pole stretch: shooting on the pressure from the pole's
-// regular start to the clamp condition lambda2(1) = 1, with Boost's TOMS 748.
+// regular start to the clamp condition lambda2(1) = L0 (the pre-stretch; 1 when mounted
+// stress-free), with Boost's TOMS 748.
 #include "numerics/shooting.hpp"
 
 #include <fmt/format.h>
@@ -27,8 +28,9 @@ using Layout = StrainsAndIntegrals;
 template <class Law>
 class InflationShooter {
  public:
-  InflationShooter(const Law& law, const SolverOptions& options)
+  InflationShooter(const Law& law, double prestretch, const SolverOptions& options)
       : law_(law),
+        flat_(prestretch),
         o_(options),
         integration_{options.integration_rel_tol, options.integration_abs_tol, options.max_steps},
         locking_i1_(law.locking_i1()) {}
@@ -94,8 +96,10 @@ class InflationShooter {
     sol.pole_stretch = l0;
     int evaluations = 0;
     std::string last_failure;
-    // 1 - lambda2(1): increases with P, from 1 - l0 < 0 at P = 0.  A meridian that cannot
-    // reach the clamp has curled towards the axis (too much pressure): the positive side.
+    // L0 - lambda2(1) (the state holds lambda2 - 1): increases with P, from L0 - l0 < 0 at
+    // P = 0.  A meridian that cannot reach the clamp has curled towards the axis (too much
+    // pressure): the positive side.  Without pre-stretch, 0 - x is -x exactly.
+    const double clamp_strain = flat_ - 1.0;
     auto residual = [&](double pressure) -> std::optional<double> {
       ++evaluations;
       const auto r = run(l0, pressure, nullptr);
@@ -103,11 +107,11 @@ class InflationShooter {
         last_failure = r.why;
         return std::nullopt;
       }
-      return -r.end[2];
+      return clamp_strain - r.end[2];
     };
     auto g = [&](double p) { return residual_or_beyond(residual, p); };
 
-    double p = guess > 0.0 ? guess : initial_pressure(l0);
+    double p = guess > 0.0 ? guess : initial_pressure(l0 - flat_);
     double value = g(p);
     double factor = guess > 0.0 ? 1.02 : 2.0;
     double lo = p, hi = p, g_lo = value, g_hi = value;
@@ -152,7 +156,7 @@ class InflationShooter {
       return sol;
     }
     const auto& x = final_run.end;
-    sol.residual = std::abs(x[2]);
+    sol.residual = std::abs(x[2] - clamp_strain);
     sol.slope_rate = final_run.start.slope_rate;
     sol.pole_stress = final_run.start.pole_stress;
     sol.pole_height = x[3];
@@ -176,11 +180,15 @@ class InflationShooter {
   }
 
  private:
-  // A first guess of P(l0): the small-strain (Föppl-Hencky) scaling P ~ (l0 - 1)^(3/2), capped
-  // near the neo-Hookean maximum; the bracket search corrects it.
-  static double initial_pressure(double l0) { return std::min(2.5 * std::pow(l0 - 1.0, 1.5), 1.0); }
+  // A first guess of P from the pole stretch's excess over the flat state's: the small-strain
+  // (Föppl-Hencky) scaling P ~ excess^(3/2), capped near the neo-Hookean maximum; the bracket
+  // search corrects it (a pre-stretched membrane's P ~ excess^(1/2) as well).
+  static double initial_pressure(double excess) {
+    return std::min(2.5 * std::pow(excess, 1.5), 1.0);
+  }
 
   const Law& law_;
+  double flat_;  // L0: the clamp's hoop stretch and the flat state's pole stretch
   SolverOptions o_;
   IntegrationSettings integration_;
   double locking_i1_;
@@ -188,22 +196,33 @@ class InflationShooter {
 
 }  // namespace
 
+double reference_clamp_radius_mm(const InflationProblem& problem) {
+  return problem.clamp_radius_mm / problem.prestretch;
+}
+
+double solver_pressure_scale_mpa(const InflationProblem& problem) {
+  return problem.material.shear_modulus_mpa * problem.thickness_mm /
+         reference_clamp_radius_mm(problem);
+}
+
 double locking_pole_stretch(const MaterialLaw& law) {
   const double i1_max = locking_first_invariant(law);
   if (!std::isfinite(i1_max)) return i1_max;
   return equibiaxial_stretch_for_first_invariant(i1_max);
 }
 
-ScaledInflation solve_inflation(const MaterialLaw& law, double l0, const SolverOptions& options,
-                                double pressure_guess) {
+ScaledInflation solve_inflation(const InflationProblem& problem, double l0,
+                                const SolverOptions& options, double pressure_guess) {
+  const MaterialLaw& law = problem.material.law;
+  const double flat = problem.prestretch;
   ScaledInflation sol;
   sol.pole_stretch = l0;
-  if (l0 == 1.0) {  // the flat, unloaded membrane
+  if (l0 == flat) {  // the flat membrane, unloaded (at its pre-stretch)
     sol.status = Status::Converged;
     if (options.record_fields)
       for (int k = 1; k <= std::max(1, options.field_points); ++k)
         sol.samples.push_back(
-            {static_cast<double>(k) / std::max(1, options.field_points), 0.0, 1.0, 1.0, 0.0});
+            {static_cast<double>(k) / std::max(1, options.field_points), 0.0, flat, flat, 0.0});
     return sol;
   }
   if (!(first_invariant(l0, l0) < locking_first_invariant(law))) {
@@ -219,7 +238,7 @@ ScaledInflation solve_inflation(const MaterialLaw& law, double l0, const SolverO
   SolverOptions o = options;
   o.record_fields = true;  // samples are cheap next to the shooting; the caller drops them
   auto out = std::visit(
-      [&](const auto& l) { return InflationShooter(l, o).solve(l0, pressure_guess); }, law);
+      [&](const auto& l) { return InflationShooter(l, flat, o).solve(l0, pressure_guess); }, law);
   if (!options.record_fields) out.samples.clear();
   return out;
 }

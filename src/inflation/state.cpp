@@ -13,12 +13,18 @@ namespace puncture {
 
 namespace detail {
 
-void check_pole_stretch(double pole_stretch) {
-  if (!std::isfinite(pole_stretch) || pole_stretch < 1.0)
-    throw InvalidInput("pole_stretch",
-                       fmt::format("pole stretch must be a finite number >= 1 (an inflated "
-                                   "membrane stretches), got {}",
-                                   pole_stretch));
+void check_pole_stretch(const InflationProblem& problem, double pole_stretch) {
+  const double flat = problem.prestretch;
+  if (!std::isfinite(pole_stretch) || pole_stretch < flat)
+    throw InvalidInput(
+        "pole_stretch",
+        flat == 1.0 ? fmt::format("pole stretch must be a finite number >= 1 (an inflated "
+                                  "membrane stretches), got {}",
+                                  pole_stretch)
+                    : fmt::format("pole stretch must be a finite number >= the pre-stretch {:g} "
+                                  "(an inflated membrane stretches beyond its flat state), got {}",
+                                  flat,
+                                  pole_stretch));
 }
 
 namespace {
@@ -43,7 +49,9 @@ void push_field(MembraneFields& f, const MaterialLaw& law, double g, double a, d
 }  // namespace
 
 InflationState to_physical(const InflationProblem& p, const ScaledInflation& sol) {
-  const double a = p.clamp_radius_mm, h = p.thickness_mm, g = p.material.shear_modulus_mpa;
+  // The solver's lengths are in the stress-free clamp radius A / L0.
+  const double a = reference_clamp_radius_mm(p), h = p.thickness_mm;
+  const double g = p.material.shear_modulus_mpa;
   InflationState s;
   s.status = sol.status;
   s.message = sol.message;
@@ -51,8 +59,9 @@ InflationState to_physical(const InflationProblem& p, const ScaledInflation& sol
   s.shooting_evaluations = sol.evaluations;
   if (!sol.ok()) return s;
   const double l0 = sol.pole_stretch;
-  s.normalized_pressure = sol.pressure;
-  s.pressure_mpa = sol.pressure * pressure_scale_mpa(p);
+  // The reported normalisation stays p A / (G H), A the clamp radius (the solver's is A / L0).
+  s.normalized_pressure = sol.pressure * p.prestretch;
+  s.pressure_mpa = sol.pressure * solver_pressure_scale_mpa(p);
   s.pole_height_mm = a * sol.pole_height;
   s.volume_mm3 = a * a * a * sol.volume;
   s.stored_energy_mj = 2.0 * std::numbers::pi * g * h * a * a * sol.energy;
@@ -93,9 +102,8 @@ InflationState to_physical(const InflationProblem& p, const ScaledInflation& sol
 InflationState inflate_at_pole_stretch(const InflationProblem& problem, double pole_stretch,
                                        const SolverOptions& options) {
   validate(problem);
-  detail::check_pole_stretch(pole_stretch);
-  return detail::to_physical(problem,
-                             detail::solve_inflation(problem.material.law, pole_stretch, options));
+  detail::check_pole_stretch(problem, pole_stretch);
+  return detail::to_physical(problem, detail::solve_inflation(problem, pole_stretch, options));
 }
 
 }  // namespace puncture

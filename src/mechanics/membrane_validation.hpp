@@ -23,6 +23,11 @@ void append_material_errors(std::vector<ValidationError>& errors, const Material
 void append_critical_i1_errors(std::vector<ValidationError>& errors, double critical_i1,
                                const MaterialLaw& law);
 
+// The equibiaxial pre-stretch L0 of the clamped membrane (under `parameter`): finite, >= 1 (a
+// compressed membrane wrinkles) and with its mounted I1 below the critical I1.
+void append_prestretch_errors(std::vector<ValidationError>& errors, const char* parameter,
+                              double prestretch, double critical_i1);
+
 // Throws InvalidInput: `heading` (e.g. "invalid problem:"), then each error on its own indented
 // line; nothing when there is none.
 void throw_if_invalid(const char* heading, const std::vector<ValidationError>& errors);
