@@ -100,6 +100,13 @@ std::string stick_repr(const StickCriterion& s) {
   return fmt::format("StickCriterion('{}:{:g}')", to_string(s.rule), s.threshold);
 }
 
+std::string preload_repr(const Preload& p) {
+  return p.pressure_mpa == 0.0
+             ? fmt::format("Preload(prestretch={:g})", p.prestretch)
+             : fmt::format(
+                   "Preload(prestretch={:g}, pressure_mpa={:g})", p.prestretch, p.pressure_mpa);
+}
+
 // By value: pybind11 2.10 cannot vectorize a function with a const reference argument.
 double uniaxial_mpa(Material m, double stretch) {
   return m.shear_modulus_mpa * uniaxial_stress(m.law, stretch);
@@ -151,16 +158,23 @@ void bind_problem(py::module_& m) {
       .def("__repr__", &geometry_repr);
   copyable(geometry);
 
-  py::class_<Preload> preload(m, "Preload", "How the membrane is loaded before indentation");
+  py::class_<Preload> preload(
+      m, "Preload", "How the membrane is loaded before indentation: pre-stretch and gas pressure");
   preload
-      .def(py::init([](double prestretch) { return Preload{prestretch}; }),
-           py::arg("prestretch") = Preload{}.prestretch)
+      .def(py::init([](double prestretch, double pressure_mpa) {
+             return Preload{prestretch, pressure_mpa};
+           }),
+           py::arg("prestretch") = Preload{}.prestretch,
+           py::arg("pressure_mpa") = Preload{}.pressure_mpa)
       .def_readwrite("prestretch",
                      &Preload::prestretch,
                      "equibiaxial pre-stretch L0 (>= 1): the stress-free disc of radius A / L0 "
                      "is stretched by L0 and clamped at A")
-      .def("__repr__",
-           [](const Preload& p) { return fmt::format("Preload(prestretch={:g})", p.prestretch); });
+      .def_readwrite("pressure_mpa",
+                     &Preload::pressure_mpa,
+                     "gas pressure p under the membrane [MPa] (>= 0), held: inflated first, then "
+                     "indented at its pole; depths from the inflated pole (sphere-tipped probe)")
+      .def("__repr__", &preload_repr);
   copyable(preload);
 
   // Indenter shapes are values (read-only: assign a new one to Problem.indenter).
@@ -431,7 +445,7 @@ void bind_problem(py::module_& m) {
       .def("__repr__", [](const Problem& p) {
         return fmt::format(
             "Problem(geometry={}, indenter={}, material={}, friction={:g}, critical_i1={:g}, "
-            "stick={}, part_two_equation='{}', preload=Preload(prestretch={:g}))",
+            "stick={}, part_two_equation='{}', preload={})",
             geometry_repr(p.geometry),
             indenter_repr(p.indenter),
             material_repr(p.material),
@@ -439,7 +453,7 @@ void bind_problem(py::module_& m) {
             p.critical_i1,
             stick_repr(p.stick),
             to_string(p.part_two_equation),
-            p.preload.prestretch);
+            preload_repr(p.preload));
       });
   copyable(problem);
 

@@ -68,6 +68,8 @@ json problem_json(const Problem& p, std::string_view calibrated) {
   out["critical_i1"] = finite(p.critical_i1, "critical I1");
   out["stick"] = stick_json(p.stick);
   out["part_two_equation"] = to_string(p.part_two_equation);
+  if (p.preload.pressure_mpa > 0.0)
+    out["pressure_mpa"] = finite(p.preload.pressure_mpa, "pressure");
   // The flat punch's JSON is unchanged; another shape is named.
   if (std::holds_alternative<SphereTipped>(p.indenter)) out["indenter"] = "sphere-tipped";
   return out;

@@ -12,11 +12,12 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 27> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 28> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
     {"preload.prestretch", "--prestretch"},
+    {"preload.pressure_mpa", "--pressure"},
     {"clamp_radius_mm", "--clamp-radius"},
     {"thickness_mm", "--thickness"},
     {"prestretch", "--prestretch"},

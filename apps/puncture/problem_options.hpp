@@ -17,6 +17,7 @@ struct ProblemFlags {
   double indenter_radius_mm = radius_mm(defaults.indenter);
   double thickness_mm = defaults.geometry.thickness_mm;
   double prestretch = defaults.preload.prestretch;
+  double pressure_mpa = defaults.preload.pressure_mpa;
   double shear_modulus_mpa = defaults.material.shear_modulus_mpa;
   std::string material = "gent";
   double j_lim = Gent{}.j_lim;
@@ -31,6 +32,7 @@ struct ProblemFlags {
   CLI::Option* shear_modulus_option = nullptr;
   CLI::Option* yeoh_option = nullptr;
   CLI::Option* prestretch_option = nullptr;
+  CLI::Option* pressure_option = nullptr;
 };
 
 // Registers the flags on `app` (with units and allowed values in their help).
@@ -44,7 +46,8 @@ Problem make_problem(const ProblemFlags& flags);
 Problem make_problem(const ProblemFlags& flags, Unknown unknown);
 
 // The membrane the flags describe, for `inflate` (no indenter: the indenter and contact flags
-// are not read; --prestretch is refused).  Throws InputError like make_problem.
+// are not read; the indentation's --pressure is refused: `inflate --pressure` is its own flag).
+// Throws InputError like make_problem.
 InflationProblem make_inflation_problem(const ProblemFlags& flags);
 
 // The strain-energy law the material flags describe (--material, --jlim, --mr-alpha).  Throws

@@ -22,6 +22,10 @@ struct Preload {
   // and clamped at radius A, then indented (1: mounted stress-free, the paper's case).  Stretches
   // and I1 are measured from the stress-free disc, reference radii on it.
   double prestretch = 1.0;
+  // Gas pressure p under the membrane [MPa] (>= 0), held constant: the clamped membrane is first
+  // inflated by p (the first inflated state, reached by inflating slowly from flat), then
+  // indented at its pole from the convex side.  Depths are measured from the inflated pole.
+  double pressure_mpa = 0.0;
 };
 
 // When the membrane, held at the indenter's edge at first, starts to slide over it.  Coulomb

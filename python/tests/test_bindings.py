@@ -325,3 +325,19 @@ def test_prestretched_membrane_matches_cli_and_its_linear_limit(cli):
     assert state.force_n / 0.05 == pytest.approx(stiffness, rel=1e-4)
     with pytest.raises(ValueError, match="pre-stretch must be a finite number >= 1"):
         pu.predict_puncture(pu.Problem(preload=pu.Preload(prestretch=0.9)))
+
+
+def test_pressurised_membrane_matches_cli_and_starts_from_the_inflated_dome(cli):
+    problem = pu.Problem(indenter=pu.SphereTipped(2.0), friction=0.0,
+                         preload=pu.Preload(pressure_mpa=3e-4))
+    assert repr(problem.preload) == "Preload(prestretch=1, pressure_mpa=0.0003)"
+    dome = pu.inflate_at_pressure(pu.InflationProblem.of(problem), 3e-4).states[0]
+    start = pu.solve_at_depth(problem, 0.0)
+    assert start.ok and start.part_three_stretch == pytest.approx(dome.pole_stretch, rel=1e-12)
+    ours = cli.json("state", "--indenter", "sphere-tipped", "--friction", "0", "--pressure",
+                    "3e-4", "--depth", "5")
+    assert ours["inputs"]["pressure_mpa"] == 3e-4
+    assert pu.solve_at_depth(problem, 5.0).force_n == pytest.approx(ours["state"]["force_n"],
+                                                                     rel=1e-12)
+    with pytest.raises(ValueError, match="pressure"):
+        pu.solve_at_depth(pu.Problem(preload=pu.Preload(pressure_mpa=-1.0)), 1.0)

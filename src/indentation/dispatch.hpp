@@ -2,12 +2,14 @@
 // From the user's Problem to the solver: the material law and the indenter are chosen at run
 // time (std::variant) and dispatched here, once per solve, to the shooting for that law and that
 // indenter's contact model.  A new indenter adds its contact model here.
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <variant>
 
 #include "indentation/contact/flat_punch.hpp"
 #include "indentation/contact/sphere_tipped.hpp"
+#include "indentation/inflated_dome.hpp"
 #include "indentation/shooting.hpp"
 #include "puncture/options.hpp"
 #include "puncture/problem.hpp"
@@ -41,14 +43,22 @@ using ContactModelOf = decltype(contact_model_of<Law>(std::declval<const Shape&>
 
 // fn(shooting) with the shooting of the problem's law and indenter; every pair gives fn's result
 // the same type.
+// Under a gas pressure the membrane is inflated first (inflated_dome; a pressure it cannot hold
+// throws PhysicalFailure, which reporting_failures turns into the result's status).
 template <class Fn>
 decltype(auto) with_shooting(const Problem& problem, const SolverOptions& options, Fn&& fn) {
-  const ShootingSettings settings = shooting_settings(options, problem.preload.prestretch);
+  ShootingSettings settings = shooting_settings(options, problem.preload.prestretch);
+  std::optional<ScaledSolution> dome_state;
+  if (auto dome = inflated_dome(problem, options)) {
+    settings.pressure = dome->pressure;
+    settings.dome_height = dome->height;
+    dome_state = std::move(dome->state);
+  }
   return std::visit(
       [&](const auto& law, const auto& shape) -> decltype(auto) {
         using Contact = ContactModelOf<std::decay_t<decltype(law)>, std::decay_t<decltype(shape)>>;
         const IndentationShooting<Contact> shooting(
-            law, settings, contact_settings(problem, shape), options.record_fields);
+            law, settings, contact_settings(problem, shape), options.record_fields, dome_state);
         return std::forward<Fn>(fn)(shooting);
       },
       problem.material.law,

@@ -2,8 +2,8 @@
 // The free membrane (Part I) from where it leaves the indenter to the clamp: integrated once for
 // a given start, with the clamp residual, the height climbed and the largest I1 along the way.
 // The contact model (indentation/contact/) supplies the start; the shooting varies it.  Part I is
-// the free membrane (mechanics/free_membrane_ode.hpp) under the indenter's force alone, its state
-// the stretches.
+// the free membrane (mechanics/free_membrane_ode.hpp) under the indenter's force and the gas
+// pressure (if any), its state the stretches.
 #include <algorithm>
 #include <limits>
 #include <optional>
@@ -50,6 +50,8 @@ class FreePart {
   double locking_i1() const { return locking_i1_; }
   // The clamp's hoop stretch L0, also the stretch of material held where it touched.
   double prestretch() const { return s_.prestretch; }
+  // The gas pressure P under the membrane (0: none).
+  double pressure() const { return s_.pressure; }
 
   // Part I at force f from `start` to the clamp; with `samples`, the solution is sampled.
   // Without `find_maximum` the largest I1 is left out (the shooting's residuals need only the
@@ -60,7 +62,9 @@ class FreePart {
     PartOneState x = start.state;
     const double r0 = start.r0;
     if (samples) samples->clear();
-    const FreeMembraneSystem<Law, Stretches> system{law_, TransverseLoad{f, 0.0}, locking_i1_};
+    // The gas pressure pushes against the indenter's force: R s1 sin(phi) = f - P r^2 / 2.
+    const FreeMembraneSystem<Law, Stretches> system{
+        law_, TransverseLoad{f, -s_.pressure}, locking_i1_};
     double last_l2 = x[2];
     InteriorMaximum<PartOneState> i1_max;
     Knots<PartOneState> knots;

@@ -70,6 +70,11 @@ std::string full_report(const Problem& p) {
                                num(l0),
                                num(reference_clamp_radius_mm(p)),
                                num(2.0 * l0 * l0 + 1.0 / (l0 * l0 * l0 * l0))));
+  if (p.preload.pressure_mpa > 0.0)
+    line(out,
+         "gas pressure p",
+         num(p.preload.pressure_mpa) +
+             " MPa (held; the membrane is inflated first, depths from the inflated pole)");
   line(out, "material", describe(p.material));
   line(out, "friction mu'", num(p.friction));
   line(out, "critical I1", num(p.critical_i1));

@@ -53,8 +53,15 @@ Equilibrium to_physical(const Problem& p, const Contact& contact, const ScaledSo
         sol.message);
   if (options.record_fields && sol.ok()) {
     const FieldScales scales{big_a, p.material.shear_modulus_mpa, p.geometry.thickness_mm};
-    contact.append_contact_fields(sol, scales, e.fields);
-    append_free_fields(contact.law(), sol, contact.free_part_inner_height(sol), scales, e.fields);
+    // Before contact under a gas pressure the whole membrane is the inflated dome, free.
+    const bool dome = sol.configuration == Configuration::Unloaded && p.preload.pressure_mpa > 0.0;
+    if (!dome) contact.append_contact_fields(sol, scales, e.fields);
+    append_free_fields(contact.law(),
+                       sol,
+                       dome ? 0.0 : contact.free_part_inner_height(sol),
+                       scales,
+                       e.fields,
+                       dome_pressure(p));
   }
   return e;
 }

@@ -120,6 +120,17 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
   detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
   detail::append_prestretch_errors(
       errors, "preload.prestretch", p.preload.prestretch, p.critical_i1);
+  if (const double pressure = p.preload.pressure_mpa; !std::isfinite(pressure) || pressure < 0.0)
+    errors.push_back(
+        {"preload.pressure_mpa",
+         fmt::format("pressure must be a finite number >= 0 MPa (the gas under the membrane "
+                     "pushes it towards the indenter), got {}",
+                     pressure)});
+  else if (pressure > 0.0 && std::holds_alternative<FlatPunch>(p.indenter))
+    errors.push_back({"preload.pressure_mpa",
+                      "the indentation of an inflated membrane is solved for the sphere-tipped "
+                      "probe only so far (--indenter sphere-tipped); the flat punch under "
+                      "pressure is not implemented yet"});
   const auto& s = p.stick;
   // The sphere-tipped probe is solved sliding only (docs/model.md, §15): a stick stage is
   // refused rather than answered as sliding.

@@ -81,7 +81,8 @@ SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
     // The held membrane under the tip carries the pre-tension s_eq(L0) itself (docs/model.md §16):
     // the adhesion holds what the edge carries beyond it (nothing added without pre-stretch).
     const double l0 = p.preload.prestretch;
-    const double pretension = l0 == 1.0 ? 0.0 : membrane_stress(shooting.contact().law(), l0, l0).s1;
+    const double pretension =
+        l0 == 1.0 ? 0.0 : membrane_stress(shooting.contact().law(), l0, l0).s1;
     const auto f =
         first_force_where(shooting, Stage::Stick, 0.0, -target, [&](const ScaledSolution& s) {
           return s.edge_s1 - pretension - target;

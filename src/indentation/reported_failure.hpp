@@ -4,6 +4,7 @@
 // Boost's root finders handed an interval that turns out not to bracket its root, becomes a
 // NoConvergence result with the routine's message.
 #include <exception>
+#include <stdexcept>
 #include <string>
 
 #include "puncture/equilibrium.hpp"
@@ -11,10 +12,27 @@
 
 namespace puncture::detail {
 
+// A physical answer found before any solve could start (e.g. a pressure that no inflated state
+// holds): reported with its own status, not as a numerical failure.
+class PhysicalFailure : public std::runtime_error {
+ public:
+  PhysicalFailure(Status status, const std::string& message)
+      : std::runtime_error(message), status_(status) {}
+  Status status() const { return status_; }
+
+ private:
+  Status status_;
+};
+
 template <class Result, class Body>
 Result reporting_failures(Body&& body) {
   try {
     return body();
+  } catch (const PhysicalFailure& e) {
+    Result r;
+    r.status = e.status();
+    r.message = e.what();
+    return r;
   } catch (const std::exception& e) {
     Result r;
     r.status = Status::NoConvergence;

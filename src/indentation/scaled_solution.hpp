@@ -23,6 +23,11 @@ struct ShootingSettings {
   // The clamp condition lambda2 = L0 at R = 1, and the stretch of material the indenter holds
   // where it touched: the pre-stretch (1 for a membrane mounted stress-free).
   double prestretch = 1.0;
+  // The gas pressure under the membrane, P = p (A / L0) / (G H), pushing it against the
+  // indenter (0: none), and the inflated pole's height above the clamp, / (A / L0): depths are
+  // measured from it.
+  double pressure = 0.0;
+  double dome_height = 0.0;
 };
 
 // Part I sample: R, t, lambda1, lambda2, h.  Part II sample: R, lambda1, y.

@@ -8,6 +8,7 @@
 
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/depth_newton.hpp"
@@ -23,12 +24,16 @@ class IndentationShooting {
 
   // `record_unloaded`: whether the state at zero force samples the flat membrane (the loaded
   // states always sample Part I; Equilibrium fields are made from the samples on request).
+  // `dome`: under a gas pressure, the inflated membrane before contact (the state at zero
+  // force; inflated_dome in indentation/inflated_dome.hpp), instead of the contact's flat one.
   IndentationShooting(const Law& law, const ShootingSettings& settings,
-                      const typename Contact::Settings& contact, bool record_unloaded = true)
+                      const typename Contact::Settings& contact, bool record_unloaded = true,
+                      std::optional<ScaledSolution> dome = std::nullopt)
       : part_one_(law, settings),
         coarse_part_one_(law, coarse(settings)),
         contact_(part_one_, contact),
-        record_unloaded_(record_unloaded) {}
+        record_unloaded_(record_unloaded),
+        dome_(std::move(dome)) {}
   // The contact model refers to part_one_.
   IndentationShooting(const IndentationShooting&) = delete;
   IndentationShooting& operator=(const IndentationShooting&) = delete;
@@ -44,7 +49,7 @@ class IndentationShooting {
   // integrated finely once (its clamp residual ~1e-7, so usually judged not converged), for the
   // steps of a search that polishes its own end.
   ScaledSolution solve(Stage stage, double f, bool record = true, bool rough = false) const {
-    if (f == 0.0) return contact_.unloaded(record_unloaded_);
+    if (f == 0.0) return dome_ ? *dome_ : contact_.unloaded(record_unloaded_);
     ScaledSolution sol;
     sol.f = f;
     int evals = 0;
@@ -445,7 +450,8 @@ class IndentationShooting {
     sol.max_i1 = run.max_i1;
     sol.max_i1_r = run.max_i1_r;
     sol.max_i1_radius = run.max_i1_radius;
-    sol.depth = run.height;
+    // From the inflated pole, if any (+ 0 without pressure: the height itself, bit for bit).
+    sol.depth = run.height + settings().dome_height;
     return true;
   }
 
@@ -473,6 +479,7 @@ class IndentationShooting {
   FreePart<Law> coarse_part_one_;
   Contact contact_;
   bool record_unloaded_;
+  std::optional<ScaledSolution> dome_;
 };
 
 }  // namespace puncture::detail

@@ -14,6 +14,12 @@ struct SolverScales {
   double normalized_force(double f) const { return f / prestretch; }
 };
 
+// The gas pressure under the membrane in the solver's unit, P = p (A / L0) / (G H).
+inline double dome_pressure(const Problem& p) {
+  return p.preload.pressure_mpa * reference_clamp_radius_mm(p) /
+         (p.material.shear_modulus_mpa * p.geometry.thickness_mm);
+}
+
 inline SolverScales solver_scales(const Problem& p) {
   const double l0 = p.preload.prestretch;
   return {reference_clamp_radius_mm(p), force_scale_n(p) / l0, l0};

@@ -102,7 +102,8 @@ TEST(Reliability, RandomMembranesGiveAStateOrAPhysicalReason) { sweep(20261123, 
 // reached, 37 would wrap the side), all confirmed, none numerical.
 TEST(Reliability, RandomYeohMembranesGiveAStateOrAPhysicalReason) { sweep(20261125, Laws::Yeoh); }
 
-// Pre-stretched membranes (L0 up to 3) over the same ranges.
+// Pre-stretched membranes (L0 up to 3) over the same ranges.  10^4 of them: 9158 converged, 842
+// physical failures (529 not reached, 313 would wrap the side), all confirmed, none numerical.
 TEST(Reliability, RandomPrestretchedMembranesGiveAStateOrAPhysicalReason) {
   sweep(20261126, Laws::Paper, Mounting::Prestretched);
 }

@@ -59,6 +59,7 @@ struct SphereCapSystem {
   double a;
   double locking_i1;
   double mu = 0.0;  // Coulomb slip: the membrane slides away from the pole, friction points to it
+  double pressure = 0.0;  // gas pressure P pressing the membrane onto the sphere (adds to p)
 
   void operator()(const SphereCapState& x, SphereCapState& dx, double r_ref) const {
     const double theta = x[0], l1 = x[1];
@@ -69,10 +70,12 @@ struct SphereCapSystem {
       return outside_domain(dx);
     const double dl2 = (l1 * std::cos(theta) - l2) / r_ref;
     dx[0] = l1 / a;
-    // d(R s1)/dR = s2 cos(theta) + mu p r lambda1, p r lambda1 = sin(theta) (s1 l1 / l2 + s2).
+    // d(R s1)/dR = s2 cos(theta) + mu p r lambda1, p r lambda1 = sin(theta) (s1 l1 / l2 + s2 +
+    // P a l1) (the contact pressure is Laplace's plus the gas pressure).
     const double tangential =
         mu == 0.0 ? std::cos(theta) * st.s2
-                  : std::cos(theta) * st.s2 + mu * std::sin(theta) * (st.s1 * l1 / l2 + st.s2);
+                  : std::cos(theta) * st.s2 +
+                        mu * std::sin(theta) * (st.s1 * l1 / l2 + st.s2 + pressure * a * l1);
     dx[1] = (tangential - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
     dx[2] = law.derivatives(st.i1, second_invariant(l1, l2)).w * r_ref;
   }
@@ -84,19 +87,22 @@ struct SphereCapSystem {
 // s, alpha = ds1/dlambda1 and beta = ds1/dlambda2 at the equibiaxial stretch L.  The state at R
 // has an error O(R^4).
 //
-// With friction mu the slip traction adds mu 2 s L R / a to d(R s1)/dR at O(R): lambda1 gains
-// b R, lambda2 b R / 2, with b = 4 mu s L / (3 alpha a); the O(R^2) terms would need the stresses'
-// second derivatives, so the frictional start keeps the frictionless c and has an error O(R^2)
-// (the cap then starts closer to the pole).
+// With friction mu the slip traction adds mu (2 s L / a + P L^2) R to d(R s1)/dR at O(R) (the
+// contact pressure at the pole is 2 s / (L a) + P, P the gas pressure): lambda1 gains b R,
+// lambda2 b R / 2, with b = 2 mu (2 s L / a + P L^2) / (3 alpha); the O(R^2) terms would need the
+// stresses' second derivatives, so the frictional start keeps the frictionless c and has an
+// error O(R^2) (the cap then starts closer to the pole).
 template <class Law>
 SphereCapState sphere_cap_pole_state(const Law& law, double a, double l, double r_ref,
-                                     double mu = 0.0) {
+                                     double mu = 0.0, double pressure = 0.0) {
   const auto st = membrane_stress(law, l, l);
   const double alpha = st.ds1_dl1, beta = st.ds1_dl2, s = st.s1;
   const double c = ((3.0 * beta - alpha) * l * l * l - 3.0 * s * l * l) / (16.0 * alpha * a * a);
   const double w = law.derivatives(st.i1, second_invariant(l, l)).w;
   if (mu != 0.0) {
-    const double b = 4.0 * mu * s * l / (3.0 * alpha * a);
+    const double b = pressure == 0.0
+                         ? 4.0 * mu * s * l / (3.0 * alpha * a)
+                         : 2.0 * mu * (2.0 * s * l / a + pressure * l * l) / (3.0 * alpha);
     return {(l * r_ref + 0.5 * b * r_ref * r_ref + c * r_ref * r_ref * r_ref / 3.0) / a,
             l + b * r_ref + c * r_ref * r_ref,
             0.5 * w * r_ref * r_ref};
@@ -121,7 +127,8 @@ class SphereTippedContact {
       : part_one_(part_one),
         law_(part_one.law()),
         s_(settings),
-        locking_i1_(part_one.locking_i1()) {}
+        locking_i1_(part_one.locking_i1()),
+        pressure_(part_one.pressure()) {}
 
   // The pole stretch exceeds 1.
   double parameter_floor(Configuration) const { return 1.0; }
@@ -131,27 +138,32 @@ class SphereTippedContact {
     bool at_equator = false;  // the contact reached theta = pi/2 before carrying the force
     double r = 0.0;           // reference radius of the contact edge (or of the equator)
     SphereCapState state{};
-    double vertical = 0.0;  // R s1 sin(theta) there: the force the cap carries
+    double vertical = 0.0;  // R s1 sin(theta) there: the membrane's vertical pull
+    double carried = 0.0;   // ... plus the gas pressure on the cap: the force the cap carries
   };
 
-  // The cap from the pole until it carries the force f (R s1 sin(theta) = f: the contact edge)
-  // or reaches the equator (f = infinity: always the equator).  With `samples`, the cap is
+  // The cap from the pole until it carries the force f (R s1 sin(theta) + P r^2 / 2 = f: the
+  // contact edge; the gas pressure on the cap helps the membrane hold the probe) or reaches the
+  // equator (f = infinity: always the equator).  With `samples`, the cap is
   // sampled (R, lambda1, theta); with `i1_max`, I1 is tracked along it.  Empty outside the
   // material's domain.
   std::optional<CapEnd> march(double l, double f, std::vector<PartTwoSample>* samples = nullptr,
                               InteriorMaximum<SphereCapState>* i1_max = nullptr) const {
     if (!(l > 0.0) || !std::isfinite(l) || !(first_invariant(l, l) < locking_i1_))
       return std::nullopt;
-    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu};
+    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu, pressure_};
     // theta = kPoleStart there (closer with friction: that start is exact to O(R^2) only; the
     // neglected terms are O((mu theta)^2) ~ 1e-10 mu^2 relative at theta = 1e-5)
     const double r_start = (s_.mu == 0.0 ? kPoleStart : kPoleStartFriction) * s_.a / l;
-    SphereCapState y = sphere_cap_pole_state(law_, s_.a, l, r_start, s_.mu);
+    SphereCapState y = sphere_cap_pole_state(law_, s_.a, l, r_start, s_.mu, pressure_);
     auto vertical = [&](double r, const SphereCapState& x) {
       return r * membrane_stress(law_, x[1], s_.a * std::sin(x[0]) / r).s1 * std::sin(x[0]);
     };
+    auto carried = [&](double r, const SphereCapState& x) {
+      return pressure_ == 0.0 ? vertical(r, x) : vertical(r, x) + gas_load(x[0]);
+    };
     auto crossed = [&](double r, const SphereCapState& x) {
-      return x[0] >= kHalfPiCap || vertical(r, x) >= f;
+      return x[0] >= kHalfPiCap || carried(r, x) >= f;
     };
     double r_prev = r_start, r_hit = -1.0;
     SphereCapState y_prev = y, y_hit = y;
@@ -240,14 +252,17 @@ class SphereTippedContact {
     const auto equator = [&](double, const SphereCapState& x) {
       return Event{x[0] - kHalfPiCap, x[1] / s_.a};
     };
-    // V = R s1 sin(theta) - f, with dV/dR = cos(theta) (s2 sin(theta) + R s1 lambda1 / a) and,
-    // with friction, + mu sin(theta)^2 (s1 lambda1 / lambda2 + s2).
+    // V = R s1 sin(theta) + P (a sin(theta))^2 / 2 - f, with dV/dR = cos(theta) (s2 sin(theta)
+    // + R s1 lambda1 / a + P a sin(theta) lambda1) and, with friction, + mu sin(theta)^2 (s1
+    // lambda1 / lambda2 + s2 + P a lambda1).
     const auto edge = [&](double r, const SphereCapState& x) {
       const double l2 = s_.a * std::sin(x[0]) / r;
       const auto st = membrane_stress(law_, x[1], l2);
       const double c = std::cos(x[0]), sn = std::sin(x[0]);
-      const double friction = s_.mu * sn * sn * (st.s1 * x[1] / l2 + st.s2);
-      return Event{r * st.s1 * sn - f, c * (st.s2 * sn + r * st.s1 * x[1] / s_.a) + friction};
+      const double gas = pressure_ * s_.a * x[1];
+      const double friction = s_.mu * sn * sn * (st.s1 * x[1] / l2 + st.s2 + gas);
+      return Event{r * st.s1 * sn + gas_load(x[0]) - f,
+                   c * (st.s2 * sn + r * st.s1 * x[1] / s_.a + gas * sn) + friction};
     };
     // The search ends at the equator if the step passes it (R s1 sin(theta) peaks there: dV/dR
     // carries a factor cos(theta)); the force is carried before the equator if V reaches f by
@@ -263,7 +278,7 @@ class SphereTippedContact {
     std::optional<SphereCapState> y_end = y_stop;
     CapEnd end;
     end.at_equator = true;
-    if (std::isfinite(f) && vertical(r_stop, y_stop) >= f) {
+    if (std::isfinite(f) && carried(r_stop, y_stop) >= f) {
       SphereCapState y_edge;
       r_end = locate(edge, r_stop, y_stop, y_edge);
       if (!r_end) return std::nullopt;
@@ -273,6 +288,7 @@ class SphereTippedContact {
     end.r = *r_end;
     end.state = *y_end;
     end.vertical = vertical(end.r, end.state);
+    end.carried = carried(end.r, end.state);
     if (samples) samples->push_back({end.r, end.state[1], end.state[0]});
     if (i1_max)
       i1_max->observe(
@@ -292,7 +308,7 @@ class SphereTippedContact {
     if (end->at_equator) {
       // Carried only at the equator: a vertical exit when the force is met there to round-off
       // (the lower end of the shooting bracket), else the contact would wrap the side.
-      if (!(end->vertical >= f * (1.0 - 1e-9))) return std::nullopt;
+      if (!(end->carried >= f * (1.0 - 1e-9))) return std::nullopt;
       return vertical_start(*end);
     }
     return edge_start(*end);
@@ -334,6 +350,7 @@ class SphereTippedContact {
     // of Part I leaving the equator vertically there: negative while the contact stays on the
     // hemisphere, >= 0 once it wraps the cylinder side.
     const auto onset = equator_onset(f);
+    if (!onset && pressure_ > 0.0 && f <= gas_load(kHalfPiCap)) return hemisphere_plan(f, counted);
     if (!onset) {
       plan.status = Status::BeyondLocking;
       plan.message =
@@ -415,6 +432,33 @@ class SphereTippedContact {
     plan.cap = locking_radial_stretch(law_, 1.0);
     plan.no_root_message =
         "sphere-tipped shooting found no pole stretch meeting the clamp condition";
+    return plan;
+  }
+
+  // Under a gas pressure whose share P a^2 / 2 at the equator alone exceeds f, every pole
+  // stretch's cap carries f before the equator: the contact stays on the hemisphere, and the
+  // bracket of the pole stretch starts at 1 + 2^-k (k = 1, 2, ...: the first with a negative
+  // clamp residual, a membrane too slack to reach the clamp), capped at locking.
+  template <class Residual>
+  ShootingPlan hemisphere_plan(double f, Residual& counted) const {
+    ShootingPlan plan;
+    plan.configuration = Configuration::SlipWithoutPartTwo;
+    for (int k = 1; k <= 60; ++k) {
+      const double l = 1.0 + std::ldexp(1.0, -k);
+      const auto g = counted(Configuration::SlipWithoutPartTwo, l);
+      if (g && *g < 0.0) {
+        plan.lo = l;
+        plan.g_lo = *g;
+        plan.cap = locking_radial_stretch(law_, 1.0);
+        plan.no_root_message =
+            "sphere-tipped shooting under pressure found no pole stretch meeting the clamp "
+            "condition";
+        return plan;
+      }
+    }
+    plan.status = Status::NoConvergence;
+    plan.message =
+        "sphere-tipped shooting under pressure: no pole stretch with a negative clamp residual";
     return plan;
   }
 
@@ -526,10 +570,16 @@ class SphereTippedContact {
   }
 
   // Normal balance: on the sphere p = (s1 / lambda2 + s2 / lambda1) / a (the true tensions over
-  // the sphere's radius, Laplace's law), on the cylinder p = s2 / (lambda1 a); normalised by
-  // G H / A.
+  // the sphere's radius, Laplace's law), on the cylinder p = s2 / (lambda1 a); the gas pressure
+  // presses the membrane onto the probe and adds to both; normalised by G H / A.
   double contact_pressure(double l1, double l2, const MembraneStress& st, bool side) const {
-    return ((side ? 0.0 : st.s1 / l2) + st.s2 / l1) / s_.a;
+    return ((side ? 0.0 : st.s1 / l2) + st.s2 / l1) / s_.a + pressure_;
+  }
+
+  // The gas pressure's resultant on the cap up to polar angle theta, P (a sin(theta))^2 / 2.
+  double gas_load(double theta) const {
+    const double r = s_.a * std::sin(theta);
+    return 0.5 * pressure_ * r * r;
   }
 
   // Height above the pole of the point at polar angle theta on the hemisphere.
@@ -551,7 +601,7 @@ class SphereTippedContact {
     auto g = [&](double l) -> std::optional<double> {
       const auto end = march(l, std::numeric_limits<double>::infinity());
       if (!end) return std::nullopt;
-      return end->vertical - f;
+      return end->carried - f;
     };
     // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
     // law without locking whose V at the equator stays below f at every stretch): far from f
@@ -560,7 +610,7 @@ class SphereTippedContact {
     // compression towards the equator).
     auto found = [&](double l) -> std::optional<EquatorOnset> {
       const auto end = march(l, std::numeric_limits<double>::infinity());
-      if (!end || !(std::abs(end->vertical - f) <= 1e-3 * f + 1e-9)) return std::nullopt;
+      if (!end || !(std::abs(end->carried - f) <= 1e-3 * f + 1e-9)) return std::nullopt;
       last_onset_ = {f, l};
       return EquatorOnset{l, *end};
     };
@@ -583,7 +633,7 @@ class SphereTippedContact {
         std::optional<double> g_lo;
         for (int k = 0; k < 60; ++k, step *= 2.0) {
           lo = std::max(1.0, hi - step);
-          g_lo = lo == 1.0 ? std::optional<double>(-f) : g(lo);
+          g_lo = lo == 1.0 ? std::optional<double>(gas_load(kHalfPiCap) - f) : g(lo);
           if (g_lo && *g_lo < 0.0) break;
           if (g_lo) {
             hi = lo;
@@ -613,9 +663,13 @@ class SphereTippedContact {
       if (auto warm = found(*root)) return warm;
     }
     // From the flat membrane (also when the warm start's bracket ends where the march fails).
+    // Under a gas pressure the cap carries its share P a^2 / 2 at the equator even unstretched:
+    // no onset when that alone exceeds f.
     const double cap = locking_radial_stretch(law_, 1.0);
+    const double g_flat = pressure_ == 0.0 ? -f : gas_load(kHalfPiCap) - f;
+    if (!(g_flat < 0.0)) return std::nullopt;
     root = shoot_increasing(
-        g, 1.0, -f, cap, part_one_.settings().max_iterations, std::isfinite(cap) ? 0.0 : 0.05);
+        g, 1.0, g_flat, cap, part_one_.settings().max_iterations, std::isfinite(cap) ? 0.0 : 0.05);
     if (!root) return std::nullopt;
     return found(*root);
   }
@@ -653,10 +707,13 @@ class SphereTippedContact {
     return first_invariant(l, l) >= sol.max_i1 * (1.0 - 1e-12);
   }
 
-  // Part I leaving the side vertically at R = a / p: R s1 = f, t = 0.
+  // Part I leaving the side vertically at R = a / p: R s1 = f - P a^2 / 2 (the gas pressure on
+  // the probe's cross-section takes its share), t = 0.
   std::optional<FreeStart> side_top_start(double f, double p) const {
     if (!(p > s_.a)) return std::nullopt;  // the top must lie inside the clamp
-    const auto l1 = invert_radial_stress(law_, f * p / s_.a, p);
+    const double pull = pressure_ == 0.0 ? f : f - gas_load(kHalfPiCap);
+    if (!(pull > 0.0)) return std::nullopt;
+    const auto l1 = invert_radial_stress(law_, pull * p / s_.a, p);
     if (!l1) return std::nullopt;
     return FreeStart{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPiCap, 1.0};
   }
@@ -677,7 +734,7 @@ class SphereTippedContact {
   // The cap's largest I1 (refined between samples) into the solution's, if it is larger.
   void track_cap_maximum(const InteriorMaximum<SphereCapState>& i1_max, double,
                          ScaledSolution& sol) const {
-    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu};
+    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu, pressure_};
     auto cap_i1 = [&](double r, const SphereCapState& y) {
       return first_invariant(y[1], s_.a * std::sin(y[0]) / r);
     };
@@ -761,6 +818,7 @@ class SphereTippedContact {
   const Law& law_;
   SphereTippedSettings s_;
   double locking_i1_;
+  double pressure_;  // gas pressure P under the membrane (0: none)
   // The last equator onset found (force, pole stretch): a warm start for the next (one solve
   // runs single-threaded on its own contact model).
   mutable std::pair<double, double> last_onset_{-1.0, 0.0};

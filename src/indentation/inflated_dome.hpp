@@ -1,0 +1,25 @@
+#pragma once
+// The membrane inflated by a gas pressure before the indenter touches it (Problem::preload
+// pressure_mpa): the state at zero force of an indentation under pressure, in the indentation
+// solver's variables (docs/model.md §17).
+#include <optional>
+
+#include "indentation/scaled_solution.hpp"
+#include "puncture/options.hpp"
+#include "puncture/problem.hpp"
+
+namespace puncture::detail {
+
+struct InflatedDome {
+  double pressure = 0.0;  // P = p (A / L0) / (G H)
+  double height = 0.0;    // the pole's height above the clamp, / (A / L0)
+  ScaledSolution state;   // Unloaded, all of it Part I from the pole to the clamp
+};
+
+// The first inflated state at the problem's pressure (the one reached by inflating slowly from
+// flat); empty without pressure.  Throws PhysicalFailure (reported_failure.hpp) when no inflated
+// state holds the pressure (it bursts or snaps through before contact) or the dome overhangs its
+// clamp (outside the indentation model).
+std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOptions& options);
+
+}  // namespace puncture::detail
