@@ -1,5 +1,5 @@
 #pragma once
-// `puncture figures --out DIR`: the paper's analytical figures (Wang et al. 2018, Figs. 11-13)
+// `puncture figures --out DIR`: the paper's analytical figures (Liu et al. 2018, Figs. 11-13)
 // for the membrane given by the flags: the data are computed here, drawn by the plotting script.
 #include <CLI/CLI.hpp>
 #include <string>

@@ -22,6 +22,10 @@
 #ifndef PUNCTURE_PLOT_SCRIPT
 #define PUNCTURE_PLOT_SCRIPT "python/puncture/plot_cli.py"
 #endif
+// The installed copy of the script, relative to the directory of the installed executable.
+#ifndef PUNCTURE_PLOT_SCRIPT_INSTALLED
+#define PUNCTURE_PLOT_SCRIPT_INSTALLED "../lib/puncture/python/puncture/plot_cli.py"
+#endif
 
 extern char** environ;
 
@@ -65,6 +69,20 @@ class TemporaryFile {
   std::string path_;
 };
 
+// The installed script beside the running executable (<prefix>/bin/puncture finds
+// <prefix>/<libdir>/puncture/python/puncture/plot_cli.py), else the source tree's, for the
+// executable in the build tree.
+std::string default_plot_script() {
+  std::error_code ec;
+  const auto executable = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const auto installed =
+        (executable.parent_path() / PUNCTURE_PLOT_SCRIPT_INSTALLED).lexically_normal();
+    if (std::filesystem::is_regular_file(installed, ec)) return installed.string();
+  }
+  return PUNCTURE_PLOT_SCRIPT;
+}
+
 bool is_executable(const std::string& program) {
   if (program.find('/') != std::string::npos) return access(program.c_str(), X_OK) == 0;
   const char* path = std::getenv("PATH");
@@ -84,7 +102,10 @@ bool is_executable(const std::string& program) {
 
 std::string plot_python() { return from_environment("PUNCTURE_PYTHON", PUNCTURE_PLOT_PYTHON); }
 
-std::string plot_script() { return from_environment("PUNCTURE_PLOT_SCRIPT", PUNCTURE_PLOT_SCRIPT); }
+std::string plot_script() {
+  const char* value = std::getenv("PUNCTURE_PLOT_SCRIPT");
+  return value && *value ? value : default_plot_script();
+}
 
 void check_plot_tools() {
   const auto python = plot_python();
@@ -96,8 +117,9 @@ void check_plot_tools() {
   const auto script = plot_script();
   if (!std::filesystem::is_regular_file(script))
     throw PlotError(
-        fmt::format("the plotting script '{}' is missing (it is the source tree's "
-                    "python/puncture/plot_cli.py; set PUNCTURE_PLOT_SCRIPT to its path)",
+        fmt::format("the plotting script '{}' is missing (it is the Python package's "
+                    "puncture/plot_cli.py, installed with the program or in the source tree's "
+                    "python/; set PUNCTURE_PLOT_SCRIPT to its path)",
                     script));
 }
 
@@ -126,7 +148,7 @@ void run_plot_script(const std::string& kind, const std::string& json, const std
   const TemporaryFile data(json);
   const auto python = plot_python();
   const auto script = plot_script();
-  // -B: no __pycache__ written next to the script (the source tree).
+  // -B: no __pycache__ written next to the script (the source tree or the installed package).
   std::vector<std::string> args{python, "-B", script, kind, data.path(), target};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());

@@ -2,7 +2,9 @@
 // --plot FILE and the figures subcommand: the CLI writes its JSON to a temporary file and runs
 // the Python package's plotting script (python/puncture/plot_cli.py, matplotlib) on it.
 // The interpreter is the one CMake chose (Debian's /usr/bin/python3 by default), or
-// $PUNCTURE_PYTHON; the script is the source tree's, or $PUNCTURE_PLOT_SCRIPT.
+// $PUNCTURE_PYTHON; the script is $PUNCTURE_PLOT_SCRIPT, else the installed copy found from the
+// executable's location (<prefix>/bin/../<libdir>/puncture/python/puncture/plot_cli.py), else
+// the source tree's (the executable in the build tree).
 #include <stdexcept>
 #include <string>
 

@@ -1,4 +1,4 @@
-"""The analytical figures of Wang et al. 2018 (Figs. 11-13), drawn from `puncture figures` data.
+"""The analytical figures of Liu et al. 2018 (Figs. 11-13), drawn from `puncture figures` data.
 
 `puncture figures --out DIR` computes the data with the C++ solver, writes it to
 DIR/figures-data.json and calls draw_all(data, DIR), which writes each figure as PNG and SVG:
