@@ -6,6 +6,7 @@
 
 #include "cli_error.hpp"
 #include "output.hpp"
+#include "parameter_flags.hpp"
 #include "progress.hpp"
 #include "puncture/verification.hpp"
 
@@ -51,6 +52,8 @@ VerifyOutcome run_verify(const Problem& problem, const VerifyFlags& f, Format fo
   VerifyReport report{problem, {}};
   try {
     report.verification = verify(problem, options);
+  } catch (const InvalidInput& e) {
+    rethrow_with_flags(e);  // naming the flag (--indenter, --pressure)
   } catch (const std::invalid_argument& e) {
     throw InputError(e.what());
   }

@@ -105,8 +105,9 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "Gas pressure p under the membrane [MPa] (>= 0), held constant: the\n"
                      "membrane is inflated by p first (its first inflated state), then\n"
                      "indented at its pole from the convex side; depths are measured from\n"
-                     "the inflated pole.  Sphere-tipped probe only so far.  (After\n"
-                     "'inflate', --pressure is that command's own: the states at p.)")
+                     "the inflated pole.  The flat punch takes it frictionless and\n"
+                     "sliding (--friction 0, --stick none) so far.  (After 'inflate',\n"
+                     "--pressure is that command's own: the states at p.)")
           ->group(kGeometry)
           ->capture_default_str();
 

@@ -101,6 +101,10 @@ FrictionEstimate friction_from_hole(const Problem& problem, const HoleMeasuremen
     throw InvalidInput("indenter",
                        "the friction calibration is implemented for the flat punch only, not the " +
                            describe(problem.indenter));
+  if (problem.preload.pressure_mpa > 0.0)
+    throw InvalidInput(
+        "preload.pressure_mpa",
+        "the friction calibration is not implemented for an inflated membrane (pressure > 0) yet");
   if (!std::isfinite(hole.ratio) || hole.ratio <= 0.0)
     throw InvalidInput(
         "hole.ratio",

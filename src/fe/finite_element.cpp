@@ -438,6 +438,10 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
         "indenter",
         "the finite-element method is implemented for the flat punch only, not the " +
             describe(problem.indenter));
+  if (problem.preload.pressure_mpa > 0.0)
+    throw InvalidInput(
+        "preload.pressure_mpa",
+        "the finite-element method is not implemented for an inflated membrane (pressure > 0) yet");
   check_options(options);
   const double A = reference_clamp_radius_mm(problem);
   double last = 0.0;

@@ -329,6 +329,10 @@ VerificationReport verify(const Problem& problem, const VerifyOptions& options) 
         "indenter",
         "the verification methods are implemented for the flat punch only, not the " +
             describe(problem.indenter));
+  if (problem.preload.pressure_mpa > 0.0)
+    throw InvalidInput(
+        "preload.pressure_mpa",
+        "the verification methods are not implemented for an inflated membrane (pressure > 0) yet");
   if (options.elements < 4 || options.elements > 4096)
     throw std::invalid_argument(
         fmt::format("elements: must be in the range 4 to 4096, got {}", options.elements));

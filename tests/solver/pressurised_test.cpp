@@ -1,12 +1,15 @@
-// Indentation of an inflated membrane (Problem::preload.pressure_mpa, docs/model.md §17), with
-// the sphere-tipped probe: the state before contact is the inflation solver's, the constant-
-// pressure energy balance dPi/ddelta = F with Pi = U - p V, the contact pressure and geometry
-// along the contact, the limit of a vanishing pressure, and a pressure no inflated state holds.
+// Indentation of an inflated membrane (Problem::preload.pressure_mpa, docs/model.md §17), with the
+// sphere-tipped probe and the flat punch: the state before contact is the inflation solver's, the
+// constant-pressure energy balance dPi/ddelta = F with Pi = U - p V, the contact pressure and
+// geometry along the contact, F = p pi c^2 while the membrane touches the flat face only, the
+// limit of a vanishing pressure, and a pressure no inflated state holds.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "puncture/inflation.hpp"
@@ -17,11 +20,16 @@ namespace {
 
 constexpr double kPressureMpa = 3e-4;  // the paper's membrane: pole stretch 1.118, dome 10.4 mm
 
-Problem pressurised(double pressure_mpa = kPressureMpa, double friction = 0.0) {
+Problem pressurised(double pressure_mpa = kPressureMpa, double friction = 0.0,
+                    Indenter indenter = SphereTipped{2.0}) {
   Problem p = paper_problem(Gent{125.0}, friction);
-  p.indenter = SphereTipped{2.0};
+  p.indenter = indenter;
   p.preload.pressure_mpa = pressure_mpa;
   return p;
+}
+
+Problem flat(double pressure_mpa = kPressureMpa) {
+  return pressurised(pressure_mpa, 0.0, FlatPunch{2.0});
 }
 
 SolverOptions sampled(int points) {
@@ -92,40 +100,46 @@ Quadrature simpson_work(const Problem& p, double depth) {
 }
 
 TEST(Pressurised, BeforeContactTheMembraneIsTheInflationSolversState) {
-  const Problem p = pressurised();
-  const auto inflated = inflate_at_pressure(inflation_problem(p), kPressureMpa);
-  ASSERT_TRUE(inflated.ok()) << inflated.message;
-  const InflationState& dome = inflated.states.front();
-  const auto e = solve_at_depth(p, 0.0, Stage::Slip, sampled(200));
-  ASSERT_TRUE(e.ok()) << e.message;
-  EXPECT_EQ(e.force_n, 0.0);
-  EXPECT_EQ(e.configuration, Configuration::Unloaded);
-  EXPECT_NEAR(e.part_three_stretch, dome.pole_stretch, 1e-12);
-  EXPECT_NEAR(e.max_first_invariant, dome.max_first_invariant, 1e-12);
-  // The fields: the pole stretch at the centre, the clamp L0 = 1, and the deflection, measured
-  // from the inflated pole, reaching the dome's height at the clamp.
-  const auto& m = e.fields;
-  ASSERT_GT(m.size(), 200u);
-  EXPECT_NEAR(m.hoop_stretch.front(), dome.pole_stretch, 1e-12);
-  EXPECT_NEAR(m.hoop_stretch.back(), 1.0, 1e-9);
-  EXPECT_EQ(m.deflection_mm.front(), 0.0);
-  EXPECT_NEAR(m.deflection_mm.back(), dome.pole_height_mm, 1e-9 * dome.pole_height_mm);
-  for (std::size_t i = 0; i < m.size(); ++i) EXPECT_EQ(m.part[i], MembranePart::Free);
-  // Continuity: a shallow indentation starts from that dome (the pole stretch moves by O(depth)).
-  const auto shallow = solve_at_depth(p, 1e-4, Stage::Slip, sampled(200));
-  ASSERT_TRUE(shallow.ok()) << shallow.message;
-  EXPECT_NEAR(shallow.part_three_stretch, dome.pole_stretch, 1e-4);
-  EXPECT_GT(shallow.force_n, 0.0);
+  for (const Problem& p : {pressurised(), flat()}) {
+    SCOPED_TRACE(describe(p.indenter));
+    const auto inflated = inflate_at_pressure(inflation_problem(p), kPressureMpa);
+    ASSERT_TRUE(inflated.ok()) << inflated.message;
+    const InflationState& dome = inflated.states.front();
+    const auto e = solve_at_depth(p, 0.0, Stage::Slip, sampled(200));
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_EQ(e.force_n, 0.0);
+    EXPECT_EQ(e.configuration, Configuration::Unloaded);
+    EXPECT_NEAR(e.part_three_stretch, dome.pole_stretch, 1e-12);
+    EXPECT_NEAR(e.max_first_invariant, dome.max_first_invariant, 1e-12);
+    // The fields: the pole stretch at the centre, the clamp L0 = 1, and the deflection, measured
+    // from the inflated pole, reaching the dome's height at the clamp.
+    const auto& m = e.fields;
+    ASSERT_GT(m.size(), 200u);
+    EXPECT_NEAR(m.hoop_stretch.front(), dome.pole_stretch, 1e-12);
+    EXPECT_NEAR(m.hoop_stretch.back(), 1.0, 1e-9);
+    EXPECT_EQ(m.deflection_mm.front(), 0.0);
+    EXPECT_NEAR(m.deflection_mm.back(), dome.pole_height_mm, 1e-9 * dome.pole_height_mm);
+    for (std::size_t i = 0; i < m.size(); ++i) EXPECT_EQ(m.part[i], MembranePart::Free);
+    // Continuity: a shallow indentation starts from that dome (the pole stretch moves by O(depth)).
+    const auto shallow = solve_at_depth(p, 1e-4, Stage::Slip, sampled(200));
+    ASSERT_TRUE(shallow.ok()) << shallow.message;
+    EXPECT_NEAR(shallow.part_three_stretch, dome.pole_stretch, 1e-4);
+    EXPECT_GT(shallow.force_n, 0.0);
+  }
 }
 
 // Constant pressure, frictionless: the indenter's work is the change of Pi = U - p V,
 //   int_0^delta F ddelta = Pi(delta) - Pi(0).
 // Work by Simpson's rule on a 401-point curve (error bounded by |S_h - S_2h|); Pi from the fields
 // of the end states (2000 samples each, trapezoid + Richardson, error estimated as above).
+// The flat punch: on the face alone to 0.2 mm (the contact disc reaches the corner at 0.27 mm),
+// then past the onset of Part II.
 TEST(Pressurised, WorkIsTheChangeOfThePotentialAtConstantPressure) {
-  const Problem p = pressurised();
-  for (const double depth : {5.0, 20.0}) {
-    SCOPED_TRACE(fmt::format("depth {} mm", depth));
+  for (const auto& [p, depth] : {std::pair{pressurised(), 5.0},
+                                 std::pair{pressurised(), 20.0},
+                                 std::pair{flat(), 0.2},
+                                 std::pair{flat(), 20.0}}) {
+    SCOPED_TRACE(fmt::format("{}, depth {} mm", describe(p.indenter), depth));
     const Quadrature work = simpson_work(p, depth);
     const double fine = work.value;
     const auto start = solve_at_depth(p, 0.0, Stage::Slip, sampled(2000));
@@ -135,12 +149,48 @@ TEST(Pressurised, WorkIsTheChangeOfThePotentialAtConstantPressure) {
     const double change = pi1.value - pi0.value;
     const double tol = work.error + pi0.error + pi1.error + 1e-7 * std::abs(fine);
     EXPECT_NEAR(change, fine, tol) << "work " << fine << " mJ, change of Pi " << change << " mJ";
-    record(fmt::format("relative_difference_{}mm", depth), std::abs(change / fine - 1.0));
-    record(fmt::format("tolerance_relative_{}mm", depth), tol / std::abs(fine));
+    const std::string key = fmt::format("{}_{}mm", describe(p.indenter).substr(0, 4), depth);
+    record("relative_difference_" + key, std::abs(change / fine - 1.0));
+    record("tolerance_relative_" + key, tol / std::abs(fine));
     // The gas's share is not small: without -p V the balance would fail by far.
-    const double without_gas = potential(pressurised(0.0), end).value;
+    Problem no_gas = p;
+    no_gas.preload.pressure_mpa = 0.0;
+    const double without_gas = potential(no_gas, end).value;
     EXPECT_GT(std::abs(without_gas - fine), 100.0 * tol);
   }
+}
+
+// While the membrane touches the flat face only, the gas alone carries the force on the contact
+// disc: F = p pi c^2 exactly, c the disc's radius (from the fields: the outermost point under the
+// tip), and Part I leaves the face tangentially, below it.  Just past F = p pi a^2 the membrane
+// wraps the corner, continuously: the same Part III stretch, a corner slope from zero.
+TEST(Pressurised, OnTheFlatFaceTheForceIsThePressureTimesTheContactArea) {
+  const Problem p = flat();
+  const double a = radius_mm(p.indenter);
+  for (const double depth : {0.01, 0.05, 0.1, 0.2}) {
+    SCOPED_TRACE(fmt::format("depth {} mm", depth));
+    const auto e = solve_at_depth(p, depth, Stage::Slip, sampled(400));
+    ASSERT_TRUE(e.ok()) << e.message;
+    const auto& m = e.fields;
+    double c = 0.0;
+    for (std::size_t i = 0; i < m.size(); ++i)
+      if (m.part[i] == MembranePart::Tip) c = std::max(c, m.radius_mm[i]);
+    ASSERT_LT(c, a);
+    EXPECT_NEAR(e.force_n / (kPressureMpa * kPi * c * c), 1.0, 1e-12);
+    const auto free = part_indices(m, 1);
+    ASSERT_FALSE(free.empty());
+    EXPECT_NEAR(m.slope_rad[free.front()], 0.0, 1e-12);
+    for (const std::size_t i : free) EXPECT_GE(m.deflection_mm[i], e.depth_mm - 1e-12);
+    EXPECT_EQ(e.corner_slope_rad, 0.0);
+  }
+  const double face_load = kPressureMpa * kPi * a * a;
+  const auto below = solve_at_force(p, face_load * (1.0 - 1e-7), Stage::Slip);
+  const auto above = solve_at_force(p, face_load * (1.0 + 1e-7), Stage::Slip);
+  ASSERT_TRUE(below.ok() && above.ok()) << below.message << above.message;
+  EXPECT_NEAR(above.part_three_stretch, below.part_three_stretch, 1e-6);
+  EXPECT_NEAR(below.corner_reference_radius_mm * below.part_three_stretch, a, 1e-6);
+  EXPECT_LT(above.corner_slope_rad, 1e-3);
+  EXPECT_GT(above.corner_slope_rad, 0.0);
 }
 
 // Negative control: with Coulomb slip on the hemisphere (mu' = 0.18; the contact stays on it to

@@ -95,6 +95,30 @@ std::pair<double, double> side_bracket_start(Residual& counted, double floor, do
   return {lowest, kBeyondDomain};
 }
 
+// A plan for `configuration` whose parameter (a stretch > 1) is bracketed from below: the first
+// of 1 + 2^-k (k = 1, 2, ...) with a negative clamp residual (a membrane too slack to reach the
+// clamp), capped at `cap`; NoConvergence naming `what` when none is.  For contacts under a gas
+// pressure, where the unloaded membrane is not the flat one and no onset bounds the parameter.
+template <class Residual>
+ShootingPlan bracket_from_below(Residual& counted, Configuration configuration, double cap,
+                                const char* what) {
+  ShootingPlan plan;
+  plan.configuration = configuration;
+  for (int k = 1; k <= 60; ++k) {
+    const double p = 1.0 + std::ldexp(1.0, -k);
+    if (const auto g = counted(configuration, p); g && *g < 0.0) {
+      plan.lo = p;
+      plan.g_lo = *g;
+      plan.cap = cap;
+      plan.no_root_message = std::string(what) + " found no stretch meeting the clamp condition";
+      return plan;
+    }
+  }
+  plan.status = Status::NoConvergence;
+  plan.message = std::string(what) + ": no stretch with a negative clamp residual";
+  return plan;
+}
+
 // The force at which a contact changes configuration (slip_change): the first root of an
 // onset indicator, negative at small forces, found by bracketing upward from a force far below
 // any onset (1e-4 of the force scale) with the given relative step.  Empty when the indicator is

@@ -71,7 +71,9 @@ class FlatPunchContact {
       : part_one_(part_one),
         law_(part_one.law()),
         s_(settings),
-        locking_i1_(part_one.locking_i1()) {}
+        locking_i1_(part_one.locking_i1()),
+        pressure_(part_one.pressure()),
+        face_load_(0.5 * pressure_ * s_.a * s_.a) {}
 
   // Every configuration's parameter exceeds this floor: 1 for the stretches at the edge and of
   // Part III, a / A for the hoop stretch a / R at the top of Part II (R < A).
@@ -104,11 +106,14 @@ class FlatPunchContact {
       case Configuration::SlipWithoutPartTwo: {
         // Part III stretch p: the corner material sits at R = a / p; the capstan law and the
         // vertical balance give the exit slope.
-        const double r0 = s_.a / p;
         const double s_eq = membrane_stress(law_, p, p).s1;
         if (!(s_eq > 0.0) || !std::isfinite(s_eq) || first_invariant(p, p) >= locking_i1_)
           return std::nullopt;
-        const double kappa = f / (r0 * s_eq);
+        // Under a gas pressure that alone carries f on a disc of the face, c^2 = 2 f / P < a^2,
+        // the membrane leaves the face there, tangentially (docs/model.md §17).
+        if (f < face_load_) return face_start(f, p, s_eq);
+        const double r0 = s_.a / p;
+        const double kappa = pull(f) / (r0 * s_eq);
         // Beyond exp(mu pi/2) the exit would have to be steeper than vertical: Part II exists.
         if (kappa > std::exp(s_.mu * kHalfPi) * (1.0 + 1e-9)) return std::nullopt;
         const double phi = corner_slope(kappa, s_.mu);
@@ -118,9 +123,10 @@ class FlatPunchContact {
         return FreeStart{{r0 * s_eq * ratio * std::cos(phi), *l1, p, 0.0}, r0, phi, ratio};
       }
       case Configuration::SlipWithPartTwo: {
-        // Part I leaves the side vertically at R = a / p: R s1 = f, t = 0.
+        // Part I leaves the side vertically at R = a / p: R s1 = f (less the gas's share), t = 0.
         if (!(p > s_.a)) return std::nullopt;  // the top must lie inside the clamp
-        const auto l1 = invert_radial_stress(law_, f * p / s_.a, p);
+        if (pressure_ > 0.0 && !(pull(f) > 0.0)) return std::nullopt;
+        const auto l1 = invert_radial_stress(law_, pull(f) * p / s_.a, p);
         if (!l1) return std::nullopt;
         return FreeStart{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPi, std::exp(s_.mu * kHalfPi)};
       }
@@ -325,7 +331,7 @@ class FlatPunchContact {
               return true;
             }))
       return std::nullopt;
-    const double f = r_top * membrane_stress(law_, y[0], p).s1;
+    const double f = r_top * membrane_stress(law_, y[0], p).s1 + face_load_;
     if (!(f > 0.0) || !std::isfinite(f)) return std::nullopt;
     return SideFromCorner{{{0.0, y[0], p, 0.0}, r_top, kHalfPi, capstan}, f, -y[1], *l1_corner};
   }
@@ -363,8 +369,9 @@ class FlatPunchContact {
 
   // Part III stretch at which Part I leaves the corner vertically (wrap angle pi/2) at force f.
   std::optional<double> part_two_onset_stretch(double f) const {
-    // s_eq(L) / L = f exp(-mu pi/2) / a, increasing in L from 0 at L = 1.
-    const double target = f * std::exp(-s_.mu * kHalfPi) / s_.a;
+    // s_eq(L) / L = f exp(-mu pi/2) / a (f less the gas's share), increasing in L from 0 at 1.
+    const double target = pull(f) * std::exp(-s_.mu * kHalfPi) / s_.a;
+    if (pressure_ > 0.0 && !(target > 0.0)) return std::nullopt;
     auto g = [&](double l) -> std::optional<double> {
       const double s = membrane_stress(law_, l, l).s1;
       if (!std::isfinite(s) || first_invariant(l, l) >= locking_i1_) return std::nullopt;
@@ -388,6 +395,8 @@ class FlatPunchContact {
   // Clamp residual of the Part I that leaves the corner vertically with no Part II: negative
   // while Part II is absent, >= 0 once it exists.  Empty past locking.
   std::optional<double> part_two_indicator(double f) const {
+    // The membrane on the face carries no more than the gas's share: no corner, no Part II.
+    if (pressure_ > 0.0 && !(pull(f) > 0.0)) return kTurnedBack;
     const auto onset = part_two_onset_stretch(f);
     if (!onset) return std::nullopt;
     if (std::isinf(*onset)) return 1.0;  // Part II at every stretch
@@ -450,7 +459,7 @@ class FlatPunchContact {
     // With R s1 unchanged up the side (no friction, ring balance) the force is R s1 at the corner
     // and the position of the top is left to the ordinary shooting at that force.
     if (s_.mu == 0.0 && s_.equation == PartTwoEquation::RingBalance) {
-      auto sol = shooting.solve(Stage::Slip, q_corner);
+      auto sol = shooting.solve(Stage::Slip, q_corner + face_load_);
       if (!sol.ok() || std::abs(max_first_invariant_of(sol) - i1c) > 1e-7 * i1c)
         return std::nullopt;
       return sol;
@@ -568,6 +577,10 @@ class FlatPunchContact {
     const double i1_tip = 2.0 * l3 * l3 + 1.0 / (l3 * l3 * l3 * l3);
     if (i1_tip > sol.max_i1 * (1.0 + 1e-9)) return "Part III, under the indenter's tip";
     const double tol = 1e-9;
+    const bool on_face = sol.configuration == Configuration::SlipWithoutPartTwo &&
+                         sol.r_corner * l3 < s_.a * (1.0 - 1e-12);
+    if (on_face && std::abs(sol.max_i1_r - sol.r_corner) <= tol)
+      return "Part I where it leaves the indenter's face (the edge of the contact disc)";
     if (std::abs(sol.max_i1_r - sol.r_corner) <= tol) {
       std::string where = sol.configuration == Configuration::SlipWithPartTwo
                               ? "Part II at the indenter's corner"
@@ -584,6 +597,29 @@ class FlatPunchContact {
  private:
   // Reference radius of the material at the indenter's edge before it slides: a / L0.
   double held_radius() const { return s_.a / part_one_.prestretch(); }
+
+  // The force the membrane itself carries past the face: f less the gas pressure's resultant on
+  // the face, P a^2 / 2 (f itself without pressure).
+  double pull(double f) const { return f - face_load_; }
+
+  // On the face (f < P a^2 / 2): Part III of stretch p on the disc of current radius c =
+  // sqrt(2 f / P), where the gas alone carries f; Part I leaves it tangentially (t = R s1 = R
+  // s_eq, vertical load zero there).  Empty when that disc's material lies beyond the clamp.
+  std::optional<FreeStart> face_start(double f, double p, double s_eq) const {
+    const double r0 = std::sqrt(2.0 * f / pressure_) / p;
+    if (!(r0 < 1.0) || !(r0 > 0.0)) return std::nullopt;
+    return FreeStart{{r0 * s_eq, p, p, 0.0}, r0, 0.0, 1.0};
+  }
+
+  // On the face: the Part III stretch from the first of 1 + 2^-k (k = 1, 2, ...) with a negative
+  // clamp residual (contact_model.hpp: bracket_from_below), capped at locking.
+  template <class Residual>
+  ShootingPlan face_plan(double f, Residual& counted) const {
+    return bracket_from_below(counted,
+                              Configuration::SlipWithoutPartTwo,
+                              locking_radial_stretch(law_, 1.0),
+                              "flat-punch shooting on the face under pressure");
+  }
 
   // Part II is sampled as Part I is (FreePart).
   int field_intervals() const { return std::max(1, part_one_.settings().field_points); }
@@ -621,6 +657,7 @@ class FlatPunchContact {
   // Sliding: whether Part II exists decides the configuration and its parameter's bracket.
   template <class Residual>
   ShootingPlan slip_plan(double f, Residual& counted) const {
+    if (f <= face_load_ && pressure_ > 0.0) return face_plan(f, counted);
     ShootingPlan plan;
     const auto onset = part_two_onset_stretch(f);
     if (!onset) {
@@ -716,6 +753,8 @@ class FlatPunchContact {
   const Law& law_;
   FlatPunchSettings s_;
   double locking_i1_;
+  double pressure_;   // gas pressure P under the membrane (0: none)
+  double face_load_;  // its resultant on the face, P a^2 / 2
 };
 
 }  // namespace puncture::detail

@@ -436,30 +436,14 @@ class SphereTippedContact {
   }
 
   // Under a gas pressure whose share P a^2 / 2 at the equator alone exceeds f, every pole
-  // stretch's cap carries f before the equator: the contact stays on the hemisphere, and the
-  // bracket of the pole stretch starts at 1 + 2^-k (k = 1, 2, ...: the first with a negative
-  // clamp residual, a membrane too slack to reach the clamp), capped at locking.
+  // stretch's cap carries f before the equator: the contact stays on the hemisphere, and the pole
+  // stretch is bracketed from below (bracket_from_below), capped at locking.
   template <class Residual>
-  ShootingPlan hemisphere_plan(double f, Residual& counted) const {
-    ShootingPlan plan;
-    plan.configuration = Configuration::SlipWithoutPartTwo;
-    for (int k = 1; k <= 60; ++k) {
-      const double l = 1.0 + std::ldexp(1.0, -k);
-      const auto g = counted(Configuration::SlipWithoutPartTwo, l);
-      if (g && *g < 0.0) {
-        plan.lo = l;
-        plan.g_lo = *g;
-        plan.cap = locking_radial_stretch(law_, 1.0);
-        plan.no_root_message =
-            "sphere-tipped shooting under pressure found no pole stretch meeting the clamp "
-            "condition";
-        return plan;
-      }
-    }
-    plan.status = Status::NoConvergence;
-    plan.message =
-        "sphere-tipped shooting under pressure: no pole stretch with a negative clamp residual";
-    return plan;
+  ShootingPlan hemisphere_plan(double, Residual& counted) const {
+    return bracket_from_below(counted,
+                              Configuration::SlipWithoutPartTwo,
+                              locking_radial_stretch(law_, 1.0),
+                              "sphere-tipped shooting under pressure");
   }
 
   // The flat membrane, at its pre-stretch: all of it Part I, from the pole to the clamp.
