@@ -73,7 +73,11 @@ class FreePart {
           if (find_maximum) i1_max.observe(r, y, first_invariant(y[1], y[2]));
           if (samples) knots.add(r, y);
           last_l2 = y[2];
-          if (y[0] < 0.0) {  // meridian turned back towards the axis: hoop stretch too small
+          // The meridian turned back towards the axis: hoop stretch too small.  Under a gas
+          // pressure the falling meridian may overhang its clamp (t < 0) as an inflated dome
+          // does, so it is integrated on; one that curls onto the axis fails on the way and
+          // counts as turned back below.
+          if (y[0] < 0.0 && s_.pressure == 0.0) {
             run.turned_back = true;
             return false;
           }

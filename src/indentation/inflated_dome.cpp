@@ -3,13 +3,65 @@
 #include <fmt/format.h>
 
 #include <boost/math/constants/constants.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cstdint>
 
 #include "indentation/reported_failure.hpp"
 #include "indentation/solver_scales.hpp"
 #include "inflation/scaled_inflation.hpp"
 #include "puncture/inflation.hpp"
+#include "puncture/kinematics.hpp"
 
 namespace puncture::detail {
+
+namespace {
+
+// The pole stretch of the first inflated state at normalised pressure `target` (the one reached
+// by inflating slowly from flat): the first crossing of P(pole stretch) = target in a scan from
+// the flat state to the pole's burst, refined by TOMS 748.  Empty when the scan meets a decrease
+// of P below the crossing (a limit point: the crossing may lie inside one scan interval) or a
+// solver failure: inflate_at_pressure, which locates the extrema, decides then.
+std::optional<double> first_crossing(const InflationProblem& membrane, double target,
+                                     const SolverOptions& options) {
+  constexpr int kScan = 32;
+  const double flat = membrane.prestretch;
+  const double upper = equibiaxial_stretch_for_first_invariant(membrane.critical_i1);
+  double guess = 0.0, l_prev = flat, p_prev = 0.0;
+  auto pressure = [&](double l) -> std::optional<double> {
+    const auto s = solve_inflation(membrane, l, options, guess);
+    if (!s.ok()) return std::nullopt;
+    guess = s.pressure;
+    return s.pressure;
+  };
+  for (int k = 1; k <= kScan; ++k) {
+    const double l = flat + (upper - flat) * k / kScan;
+    const auto p = pressure(l);
+    if (!p || *p < p_prev) return std::nullopt;
+    if (*p >= target) {
+      std::uintmax_t iterations = 100;
+      bool failed = false;
+      const auto bracket = boost::math::tools::toms748_solve(
+          [&](double x) {
+            const auto q = pressure(x);
+            if (!q) failed = true;
+            return q ? *q - target : 1.0;
+          },
+          l_prev,
+          l,
+          p_prev - target,
+          *p - target,
+          boost::math::tools::eps_tolerance<double>(45),
+          iterations);
+      if (failed) return std::nullopt;
+      return 0.5 * (bracket.first + bracket.second);
+    }
+    l_prev = l;
+    p_prev = *p;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOptions& options) {
   const double p_mpa = problem.preload.pressure_mpa;
@@ -17,26 +69,43 @@ std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOp
   const InflationProblem membrane = inflation_problem(problem);
   SolverOptions quiet = options;
   quiet.record_fields = false;
-  const InflationAtPressure at = inflate_at_pressure(membrane, p_mpa, {}, quiet);
-  if (!at.ok()) {
-    if (at.status == Status::NotReached)
+  const double target = p_mpa / solver_pressure_scale_mpa(membrane);
+  double pole_stretch = 0.0, pressure_guess = 0.0;
+  if (const auto crossing = first_crossing(membrane, target, quiet)) {
+    pole_stretch = *crossing;
+    pressure_guess = target;
+  } else {
+    const InflationAtPressure at = inflate_at_pressure(membrane, p_mpa, {}, quiet);
+    if (!at.ok()) {
+      if (at.status == Status::NotReached)
+        throw PhysicalFailure(
+            Status::LimitLoad,
+            fmt::format("the membrane cannot hold the pressure {:g} MPa before the indenter "
+                        "touches it: it bursts or snaps through while it is inflated ({})",
+                        p_mpa,
+                        at.message));
       throw PhysicalFailure(
-          Status::LimitLoad,
-          fmt::format("the membrane cannot hold the pressure {:g} MPa before the indenter touches "
-                      "it: it bursts or snaps through while it is inflated ({})",
-                      p_mpa,
-                      at.message));
-    throw PhysicalFailure(
-        at.status, "the inflated membrane before contact could not be solved: " + at.message);
+          at.status, "the inflated membrane before contact could not be solved: " + at.message);
+    }
+    pole_stretch = at.states.front().pole_stretch;
+    pressure_guess = at.states.front().normalized_pressure / membrane.prestretch;
   }
-  const InflationState& first = at.states.front();
   SolverOptions sampled = options;
   sampled.record_fields = true;
-  const ScaledInflation dome = solve_inflation(
-      membrane, first.pole_stretch, sampled, first.normalized_pressure / membrane.prestretch);
+  const ScaledInflation dome = solve_inflation(membrane, pole_stretch, sampled, pressure_guess);
   if (!dome.ok())
     throw PhysicalFailure(
         dome.status, "the inflated membrane before contact could not be solved: " + dome.message);
+  // The scan's bound is the pole's burst; elsewhere (Mooney-Rivlin near the clamp) the membrane
+  // may burst earlier.
+  if (!(dome.max_i1 < problem.critical_i1))
+    throw PhysicalFailure(
+        Status::LimitLoad,
+        fmt::format("the membrane cannot hold the pressure {:g} MPa before the indenter touches "
+                    "it: it bursts while it is inflated (largest I1 {:.6g} at the critical {:g})",
+                    p_mpa,
+                    dome.max_i1,
+                    problem.critical_i1));
   if (!(dome.clamp_slope < boost::math::constants::half_pi<double>()))
     throw PhysicalFailure(
         Status::OutsideModel,

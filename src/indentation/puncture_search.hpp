@@ -212,6 +212,13 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
     sol = shooting.solve(stage, *f_puncture);
   }
   if (!sol.ok()) {
+    // A search whose bracket closed on the end of what the model covers (the force searches
+    // count any failure as beyond the root) met that end, not a puncture.
+    if (failure_kind(sol.status) == FailureKind::OutsideModel) {
+      out.status = sol.status;
+      out.message = "no puncture found before the states leave the model: " + sol.message;
+      return out;
+    }
     out.message = "the state at puncture did not converge: " + sol.message;
     return out;
   }

@@ -35,12 +35,13 @@ std::string reason(const Outcome& o) {
 
 std::string summary_of(const Problem& p) {
   return fmt::format(
-      "A = {} mm, a = {} mm, H = {} mm, L0 = {}, G = {} MPa, {}, friction {}, critical I1 {}, "
-      "stick {}, {}",
+      "A = {} mm, {}, H = {} mm, L0 = {}, p = {} MPa, G = {} MPa, {}, friction {}, critical I1 "
+      "{}, stick {}, {}",
       p.geometry.clamp_radius_mm,
-      radius_mm(p.indenter),
+      describe(p.indenter),
       p.geometry.thickness_mm,
       p.preload.prestretch,
+      p.preload.pressure_mpa,
       p.material.shear_modulus_mpa,
       describe(p.material),
       p.friction,
@@ -106,6 +107,12 @@ TEST(Reliability, RandomYeohMembranesGiveAStateOrAPhysicalReason) { sweep(202611
 // physical failures (529 not reached, 313 would wrap the side), all confirmed, none numerical.
 TEST(Reliability, RandomPrestretchedMembranesGiveAStateOrAPhysicalReason) {
   sweep(20261126, Laws::Paper, Mounting::Prestretched);
+}
+
+// Inflated membranes indented at constant pressure (flat punch frictionless, sphere-tipped with
+// friction) over the same ranges.
+TEST(Reliability, RandomInflatedMembranesGiveAStateOrAPhysicalReason) {
+  sweep(20261127, Laws::Paper, Mounting::Inflated);
 }
 
 }  // namespace

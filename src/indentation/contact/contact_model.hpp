@@ -97,22 +97,32 @@ std::pair<double, double> side_bracket_start(Residual& counted, double floor, do
 
 // A plan for `configuration` whose parameter (a stretch > 1) is bracketed from below: the first
 // of 1 + 2^-k (k = 1, 2, ...) with a negative clamp residual (a membrane too slack to reach the
-// clamp), capped at `cap`; NoConvergence naming `what` when none is.  For contacts under a gas
-// pressure, where the unloaded membrane is not the flat one and no onset bounds the parameter.
+// clamp).  The candidate before it, where the residual was >= 0, caps the bracket; without one
+// the bracket grows from there in small steps (far above the root, a strongly stretched Part I
+// may fail and its stand-in residual be negative again, so a cap at locking would not bracket).
+// NoConvergence naming `what` when no candidate is negative.  For contacts under a gas pressure,
+// where the unloaded membrane is not the flat one and no onset bounds the parameter.
 template <class Residual>
-ShootingPlan bracket_from_below(Residual& counted, Configuration configuration, double cap,
-                                const char* what) {
+ShootingPlan bracket_from_below(Residual& counted, Configuration configuration, const char* what) {
   ShootingPlan plan;
   plan.configuration = configuration;
+  std::optional<double> g_above;  // the residual at the previous candidate
   for (int k = 1; k <= 60; ++k) {
     const double p = 1.0 + std::ldexp(1.0, -k);
-    if (const auto g = counted(configuration, p); g && *g < 0.0) {
+    const auto g = counted(configuration, p);
+    if (g && *g < 0.0) {
       plan.lo = p;
       plan.g_lo = *g;
-      plan.cap = cap;
+      if (g_above) {
+        plan.cap = 1.0 + std::ldexp(1.0, 1 - k);
+        plan.g_cap = *g_above;
+      } else {
+        plan.initial_step = 0.05 * (p - 1.0);
+      }
       plan.no_root_message = std::string(what) + " found no stretch meeting the clamp condition";
       return plan;
     }
+    g_above = g;
   }
   plan.status = Status::NoConvergence;
   plan.message = std::string(what) + ": no stretch with a negative clamp residual";

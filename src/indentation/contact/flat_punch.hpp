@@ -612,12 +612,11 @@ class FlatPunchContact {
   }
 
   // On the face: the Part III stretch from the first of 1 + 2^-k (k = 1, 2, ...) with a negative
-  // clamp residual (contact_model.hpp: bracket_from_below), capped at locking.
+  // clamp residual (contact_model.hpp: bracket_from_below).
   template <class Residual>
   ShootingPlan face_plan(double f, Residual& counted) const {
     return bracket_from_below(counted,
                               Configuration::SlipWithoutPartTwo,
-                              locking_radial_stretch(law_, 1.0),
                               "flat-punch shooting on the face under pressure");
   }
 
