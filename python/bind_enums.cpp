@@ -40,6 +40,7 @@ void bind_enums(py::module_& m) {
       .value("ChecksFailed", Status::ChecksFailed)
       .value("OutsideModel", Status::OutsideModel)
       .value("OnBound", Status::OnBound)
+      .value("Wrinkles", Status::Wrinkles)
       .def_property_readonly("token", [](Status s) { return to_string(s); })
       .def_property_readonly(
           "failure_kind", [](Status s) { return failure_kind(s); }, "FailureKind of this status");

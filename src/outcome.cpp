@@ -26,6 +26,8 @@ std::string to_string(Status s) {
       return "outside the model";
     case Status::OnBound:
       return "on a bound";
+    case Status::Wrinkles:
+      return "wrinkles";
   }
   return "?";
 }
@@ -39,6 +41,7 @@ FailureKind failure_kind(Status s) {
     case Status::StickWrapsSide:
     case Status::NotReached:
     case Status::OnBound:  // the data are not those of the law in its range
+    case Status::Wrinkles:
       return FailureKind::Physical;
     case Status::OutsideModel:
       return FailureKind::OutsideModel;

@@ -26,6 +26,8 @@ enum class Status {
   ChecksFailed,    // a verification check is outside its tolerance
   OutsideModel,    // the state needs what this indenter's model does not cover (message: what)
   OnBound,         // a fit's optimum is on a bound of the law's validity range (message: which)
+  Wrinkles,        // the hoop stress turns compressive: the membrane wrinkles there, outside the
+                   // tension-only membrane theory (message: where)
 };
 
 std::string to_string(Status status);

@@ -37,7 +37,17 @@ struct FreePartRun {
   double max_i1 = 0.0;
   double max_i1_r = 0.0;
   double max_i1_radius = 0.0;  // current radius there
+  double wrinkle_r = -1.0;     // the first reference radius with compressive hoop stress (-1: none)
+  double wrinkle_radius = -1.0;
 };
+
+// Whether the hoop stress s2 is compressive: for every law here (invariant-based, W1 + lambda1^2
+// W2 > 0) s2 has the sign of lambda1^2 lambda2^4 - 1 (docs/model.md §17), a check of two
+// products instead of a stress evaluation.
+inline bool hoop_compressive(double l1, double l2) {
+  const double l2_squared = l2 * l2;
+  return l1 * l1 * l2_squared * l2_squared < 1.0;
+}
 
 template <class Law>
 class FreePart {
@@ -70,7 +80,13 @@ class FreePart {
     Knots<PartOneState> knots;
     run.ok =
         integrate_part(system, x, r0, 1.0, s_.integration, [&](double r, const PartOneState& y) {
-          if (find_maximum) i1_max.observe(r, y, first_invariant(y[1], y[2]));
+          if (find_maximum) {
+            i1_max.observe(r, y, first_invariant(y[1], y[2]));
+            if (run.wrinkle_r < 0.0 && hoop_compressive(y[1], y[2])) {
+              run.wrinkle_r = r;
+              run.wrinkle_radius = y[2] * r;
+            }
+          }
           if (samples) knots.add(r, y);
           last_l2 = y[2];
           // The meridian turned back towards the axis: hoop stretch too small.  Under a gas

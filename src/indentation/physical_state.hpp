@@ -42,6 +42,13 @@ Equilibrium to_physical(const Problem& p, const Contact& contact, const ScaledSo
   e.clamp_residual = std::abs(sol.residual);
   e.shooting_evaluations = sol.evaluations;
   e.beyond_puncture = exceeded(failure_criterion(p), sol);
+  if (sol.status == Status::Wrinkles)
+    e.message = fmt::format(
+        "the hoop stress turns compressive at reference radius R = {:.6g} mm (current radius r "
+        "= {:.6g} mm): the membrane wrinkles there, outside the tension-only membrane theory (a "
+        "tension-field model is not implemented), so no state is given",
+        sol.wrinkle_r * big_a,
+        sol.wrinkle_radius * big_a);
   if (sol.deepest_state)
     e.message = fmt::format(
         "this depth cannot be reached: the deepest equilibrium of the {} stage is at depth "

@@ -58,6 +58,10 @@ struct ScaledSolution {
   // A failure to reach a depth that carries the deepest state the stage reaches (its fields
   // are that state's; the message says why no deeper state exists).
   bool deepest_state = false;
+  // Where the hoop stress first turns compressive (reference and current radius; -1: nowhere),
+  // found on the states whose largest I1 is searched.
+  double wrinkle_r = -1.0;
+  double wrinkle_radius = -1.0;
   std::vector<PartOneSample> part_one;
   std::vector<PartTwoSample> part_two;
   bool ok() const { return status == Status::Converged; }
@@ -75,7 +79,7 @@ inline double max_first_invariant_of(const ScaledSolution& sol) {
 inline void accept_collapsed_bracket(ScaledSolution& sol, double tol_factor = 100.0) {
   if (sol.status == Status::NoConvergence && sol.integrated &&
       std::abs(sol.residual) <= tol_factor * sol.shooting_tol) {
-    sol.status = Status::Converged;
+    sol.status = sol.wrinkle_r >= 0.0 ? Status::Wrinkles : Status::Converged;
     sol.message.clear();
   }
 }

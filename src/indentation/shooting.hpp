@@ -450,6 +450,8 @@ class IndentationShooting {
     sol.max_i1 = run.max_i1;
     sol.max_i1_r = run.max_i1_r;
     sol.max_i1_radius = run.max_i1_radius;
+    sol.wrinkle_r = run.wrinkle_r;
+    sol.wrinkle_radius = run.wrinkle_radius;
     // From the inflated pole, if any (+ 0 without pressure: the height itself, bit for bit).
     sol.depth = run.height + settings().dome_height;
     return true;
@@ -464,7 +466,9 @@ class IndentationShooting {
   }
   static constexpr double kLockingMargin = 1e-6;
 
-  // An integrated state judged by its clamp residual.
+  // An integrated state judged by its clamp residual, and by its hoop stress where the largest
+  // I1 was searched: a state that wrinkles is no tension-only membrane state (the message, with
+  // the place in mm, is the physical state's: to_physical).
   ScaledSolution judged(ScaledSolution sol) const {
     sol.integrated = true;
     sol.shooting_tol = settings().shooting_tol;
@@ -472,6 +476,8 @@ class IndentationShooting {
                                                                    : Status::NoConvergence;
     if (!sol.ok())
       sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);
+    else if (sol.wrinkle_r >= 0.0)
+      sol.status = Status::Wrinkles;
     return sol;
   }
 

@@ -138,8 +138,10 @@ class SphereTippedContact {
     bool at_equator = false;  // the contact reached theta = pi/2 before carrying the force
     double r = 0.0;           // reference radius of the contact edge (or of the equator)
     SphereCapState state{};
-    double vertical = 0.0;  // R s1 sin(theta) there: the membrane's vertical pull
-    double carried = 0.0;   // ... plus the gas pressure on the cap: the force the cap carries
+    double vertical = 0.0;    // R s1 sin(theta) there: the membrane's vertical pull
+    double carried = 0.0;     // ... plus the gas pressure on the cap: the force the cap carries
+    double wrinkle_r = -1.0;  // where the hoop stress first turns compressive (with i1_max):
+    double wrinkle_radius = -1.0;  // reference and current radius
   };
 
   // The cap from the pole until it carries the force f (R s1 sin(theta) + P r^2 / 2 = f: the
@@ -165,7 +167,7 @@ class SphereTippedContact {
     auto crossed = [&](double r, const SphereCapState& x) {
       return x[0] >= kHalfPiCap || carried(r, x) >= f;
     };
-    double r_prev = r_start, r_hit = -1.0;
+    double r_prev = r_start, r_hit = -1.0, wrinkle_r = -1.0, wrinkle_radius = -1.0;
     SphereCapState y_prev = y, y_hit = y;
     IntegrationSettings integration = part_one_.settings().integration;
     if (samples) {
@@ -185,7 +187,14 @@ class SphereTippedContact {
       r_prev = r;
       y_prev = x;
       if (samples) samples->push_back({r, x[1], x[0]});
-      if (i1_max) i1_max->observe(r, x, first_invariant(x[1], s_.a * std::sin(x[0]) / r));
+      if (i1_max) {
+        const double l2 = s_.a * std::sin(x[0]) / r;
+        i1_max->observe(r, x, first_invariant(x[1], l2));
+        if (wrinkle_r < 0.0 && hoop_compressive(x[1], l2)) {
+          wrinkle_r = r;
+          wrinkle_radius = l2 * r;
+        }
+      }
       return true;
     });
     if (!ok || r_hit < 0.0) return std::nullopt;
@@ -289,6 +298,8 @@ class SphereTippedContact {
     end.state = *y_end;
     end.vertical = vertical(end.r, end.state);
     end.carried = carried(end.r, end.state);
+    end.wrinkle_r = wrinkle_r;
+    end.wrinkle_radius = wrinkle_radius;
     if (samples) samples->push_back({end.r, end.state[1], end.state[0]});
     if (i1_max)
       i1_max->observe(
@@ -331,6 +342,10 @@ class SphereTippedContact {
       return false;
     }
     track_cap_maximum(i1_max, p, sol);
+    if (end->wrinkle_r >= 0.0) {  // on the cap, inside Part I: the first
+      sol.wrinkle_r = end->wrinkle_r;
+      sol.wrinkle_radius = end->wrinkle_radius;
+    }
     sol.r_corner = st.r0;
     sol.part_three_stretch = p;  // the pole's equibiaxial stretch (max_first_invariant_of)
     sol.depth += cap_height(st.slope);
