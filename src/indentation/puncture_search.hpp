@@ -244,6 +244,27 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
     return out;
   }
 
+  // Nor is a state far beyond it: a search that closed on a jump of the measure (a spurious
+  // root beyond a limit load) found no state reaching it continuously.
+  if (const double reached = measure(criterion, sol);
+      !at_switch && sol.depth >= 0.0 && reached > critical * (1.0 + 1e-6)) {
+    out.message = fmt::format(
+        "the puncture search closed on a jump of the largest {} to {:.6g} (critical {:g}) at "
+        "{:.6g} N: no state reaches the critical value continuously there",
+        measure_name(criterion),
+        reached,
+        critical,
+        *f_puncture * scale);
+    return out;
+  }
+  if (sol.depth < 0.0) {
+    out.message = fmt::format(
+        "the puncture search closed on a root with the probe above the membrane's first contact "
+        "at {:.6g} N (another branch, not the loading path)",
+        *f_puncture * scale);
+    return out;
+  }
+
   out.status = Status::Converged;
   out.state = to_physical(p, shooting.contact(), sol, stage, options);
   out.force_n = out.state.force_n;

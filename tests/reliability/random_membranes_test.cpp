@@ -62,7 +62,8 @@ void sweep(std::uint64_t seed, Laws laws, Mounting mounting = Mounting::StressFr
     const PuncturePrediction at = predict_puncture(p);
     if (at.ok()) {
       ++converged;
-      ASSERT_TRUE(std::isfinite(at.force_n) && at.force_n > 0.0 && std::isfinite(at.depth_mm))
+      ASSERT_TRUE(std::isfinite(at.force_n) && at.force_n > 0.0 && std::isfinite(at.depth_mm) &&
+                  at.depth_mm > 0.0)
           << k << ": " << summary_of(p);
       ++counts["converged"];
       continue;
