@@ -95,8 +95,8 @@ inline Problem random_membrane(std::uint64_t seed, int index, Laws laws = Laws::
     p.preload.prestretch = std::min(l0, cap);
   }
   if (mounting == Mounting::Inflated) {
-    const double scale = p.material.shear_modulus_mpa * p.geometry.thickness_mm /
-                         p.geometry.clamp_radius_mm;
+    const double scale =
+        p.material.shear_modulus_mpa * p.geometry.thickness_mm / p.geometry.clamp_radius_mm;
     p.preload.pressure_mpa = log_uniform(gen, 0.01, 1.2) * scale;
     p.stick = {StickRule::None, 0.0};
     // Frictionless: the flat punch takes no friction under pressure yet, and the sphere-tipped
