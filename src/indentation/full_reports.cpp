@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "puncture/failure.hpp"
+#include "puncture/inflation.hpp"
 #include "puncture/reports.hpp"
 
 namespace puncture {
@@ -70,11 +71,31 @@ std::string full_report(const Problem& p) {
                                num(l0),
                                num(reference_clamp_radius_mm(p)),
                                num(2.0 * l0 * l0 + 1.0 / (l0 * l0 * l0 * l0))));
-  if (p.preload.pressure_mpa > 0.0)
+  if (p.preload.pressure_mpa > 0.0) {
     line(out,
          "gas pressure p",
          num(p.preload.pressure_mpa) +
              " MPa (held; the membrane is inflated first, depths from the inflated pole)");
+    // Which inflated state the indentation starts from, when there is one (else the solve says
+    // why): the first, reached by inflating slowly from flat.
+    SolverOptions quiet;
+    quiet.record_fields = false;
+    if (const auto at =
+            inflate_at_pressure(inflation_problem(p), p.preload.pressure_mpa, {}, quiet);
+        at.ok()) {
+      const auto& first = at.states.front();
+      line(out,
+           "inflated state",
+           fmt::format("pole stretch {}, pole {} mm above the clamp{}",
+                       num(first.pole_stretch),
+                       num(first.pole_height_mm),
+                       at.states.size() > 1
+                           ? fmt::format(" (the first of {} states at this pressure, reached by "
+                                         "inflating slowly from flat; the others are not used)",
+                                         at.states.size())
+                           : std::string()));
+    }
+  }
   line(out, "material", describe(p.material));
   line(out, "friction mu'", num(p.friction));
   line(out, "critical I1", num(p.critical_i1));
