@@ -80,16 +80,6 @@ INSTANTIATE_TEST_SUITE_P(
                    Configuration::Stick}),
     [](const auto& info) { return info.param.name; });
 
-// Trapezoid rule of y over x on the samples first, first + stride, ..., and the last.
-double trapezoid(const std::vector<double>& x, const std::vector<double>& y, std::size_t stride) {
-  double sum = 0.0;
-  std::size_t i = 0;
-  for (; i + stride < x.size(); i += stride)
-    sum += 0.5 * (y[i] + y[i + stride]) * (x[i + stride] - x[i]);
-  if (i + 1 < x.size()) sum += 0.5 * (y[i] + y.back()) * (x.back() - x[i]);
-  return sum;
-}
-
 // Stored energy [mJ] of an equilibrium from its fields: Part III exactly, Parts II and I by the
 // trapezoid rule with Richardson extrapolation; `error` is the estimated error of the plain
 // trapezoid value, (U_h - U_2h) / 3.

@@ -38,16 +38,6 @@ SolverOptions sampled(int points) {
   return o;
 }
 
-// Trapezoid rule of y over x on the samples first, first + stride, ..., and the last.
-double trapezoid(const std::vector<double>& x, const std::vector<double>& y, std::size_t stride) {
-  double sum = 0.0;
-  std::size_t i = 0;
-  for (; i + stride < x.size(); i += stride)
-    sum += 0.5 * (y[i] + y[i + stride]) * (x[i + stride] - x[i]);
-  if (i + 1 < x.size()) sum += 0.5 * (y[i] + y.back()) * (x.back() - x[i]);
-  return sum;
-}
-
 // A quadrature along the fields with its error estimate: the trapezoid rule on every sample and
 // on every other one, Richardson's extrapolation of the two, and (T_h - T_2h) / 3.
 struct Quadrature {
