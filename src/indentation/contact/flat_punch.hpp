@@ -611,8 +611,9 @@ class FlatPunchContact {
     return FreeStart{{r0 * s_eq, p, p, 0.0}, r0, 0.0, 1.0};
   }
 
-  // On the face: the Part III stretch from the first of 1 + 2^-k (k = 1, 2, ...) with a negative
-  // clamp residual (contact_model.hpp: bracket_from_below).
+  // On the face (and, under pressure, past the corner without Part II): the Part III stretch
+  // from the first of 1 + 2^-k (k = 1, 2, ...) with a negative clamp residual
+  // (contact_model.hpp: bracket_from_below).
   template <class Residual>
   ShootingPlan face_plan(double f, Residual& counted) const {
     return bracket_from_below(counted,
@@ -675,6 +676,14 @@ class FlatPunchContact {
       return plan;
     }
     const double g_onset = part_two_indicator(f).value_or(kBeyondDomain);
+    if (g_onset < 0.0 && pressure_ > 0.0) {
+      // Under pressure a Part I that cannot be integrated is no sign of a stretch beyond the
+      // root (the gas may curl a slack membrane): the stretch is bracketed from below, between
+      // two candidates whose residuals are known (bracket_from_below; those below the onset
+      // have no start and are passed over).
+      ShootingPlan plan = face_plan(f, counted);
+      if (plan.ok()) return plan;
+    }
     if (g_onset < 0.0) {
       // Part I reaches the clamp with lambda2 < 1 even when it leaves the corner vertically, so
       // a larger Part III stretch (and a flatter exit) is needed: no Part II.
