@@ -6,7 +6,7 @@ namespace puncture::cli {
 
 std::string csv_text(const CurveReport& report) { return csv(curve_table(report.curve.points)); }
 
-std::string csv_text(const StateReport& report) { return csv(fields_table(report.state.fields)); }
+std::string csv_text(const StateReport& report) { return csv(state_fields_table(report.state)); }
 
 std::string csv_text(const PunctureReport& report) { return csv(puncture_table(report.puncture)); }
 

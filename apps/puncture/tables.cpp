@@ -69,6 +69,18 @@ Table fields_table(const MembraneFields& m) {
   return t;
 }
 
+Table state_fields_table(const Equilibrium& e) {
+  Table t = fields_table(e.fields);
+  const std::vector<std::string> state = {"depth_mm", "force_n", "stage", "configuration"};
+  t.columns.insert(t.columns.begin(), state.begin(), state.end());
+  for (auto& row : t.rows) {
+    const std::vector<Cell> values = {
+        e.depth_mm, e.force_n, to_string(e.stage), to_token(e.configuration)};
+    row.insert(row.begin(), values.begin(), values.end());
+  }
+  return t;
+}
+
 Table puncture_table(const PuncturePrediction& p) {
   Table t;
   t.columns = {"force_n",

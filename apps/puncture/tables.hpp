@@ -28,6 +28,9 @@ Table curve_table(const std::vector<CurvePoint>& points);
 // part, R_mm, r_mm, z_mm, slope_rad, lambda1, lambda2, lambda3, s1_mpa, s2_mpa, I1,
 // contact_pressure_mpa, friction_traction_mpa.
 Table fields_table(const MembraneFields& fields);
+// The same with the state's depth_mm, force_n, stage and configuration first on every row, for
+// a CSV file that stands on its own.
+Table state_fields_table(const Equilibrium& e);
 
 // One row: force_n, normalized_force, depth_mm, stage, configuration, part_three_stretch,
 // max_i1, crack_reference_radius_mm, crack_radius_mm, crack_location.
