@@ -132,6 +132,11 @@ int main(int argc, char** argv) {
     }
 
     if (calibration_flags.parsed()) {
+      // Refused rather than ignored: no calibration draws a figure yet.
+      if (plot_option->count() > 0)
+        throw InputError(
+            "--plot: 'calibrate' and 'fit' draw no figure yet; their --format json output holds "
+            "the numbers to plot");
       const auto format = format_of(output_flags);
       check_writable(output_flags);
       write_output(output_flags, run_calibration(app, problem_flags, calibration_flags, format));
