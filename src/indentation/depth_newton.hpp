@@ -152,8 +152,7 @@ class DepthNewton {
       ++evaluations_;
       sol = solver_.assemble(sol.configuration, sol.f, sol.parameter, record_);
     }
-    sol.status = Status::Converged;
-    sol.message.clear();
+    accept_state(sol);
     sol.evaluations = evaluations_;
     return sol;
   }

@@ -42,12 +42,6 @@ Equilibrium to_physical(const Problem& p, const Contact& contact, const ScaledSo
   e.clamp_residual = std::abs(sol.residual);
   e.shooting_evaluations = sol.evaluations;
   e.beyond_puncture = exceeded(failure_criterion(p), sol);
-  // A probe pushing the membrane lies below its first contact: a root with the tip above it is
-  // no state (the shooting's judged() refuses those it assembles; this guards every other path).
-  if (e.status == Status::Converged && sol.f > 0.0 && sol.depth < 0.0) {
-    e.status = Status::NoConvergence;
-    e.message = "a root with the probe above the membrane's first contact: not on the loading path";
-  }
   if (sol.status == Status::Wrinkles)
     e.message = fmt::format(
         "the hoop stress turns compressive at reference radius R = {:.6g} mm (current radius r "

@@ -249,7 +249,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   // the measure is steep in the force and a true root may overshoot by ~1e-5, while the jumps
   // met were 20 % and more.
   if (const double reached = measure(criterion, sol);
-      !at_switch && sol.depth >= 0.0 && reached > critical * (1.0 + 1e-3)) {
+      !at_switch && reached > critical * (1.0 + 1e-3)) {
     out.message = fmt::format(
         "the puncture search closed on a jump of the largest {} to {:.6g} (critical {:g}) at "
         "{:.6g} N: no state reaches the critical value continuously there",
@@ -259,14 +259,6 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
         *f_puncture * scale);
     return out;
   }
-  if (sol.depth < 0.0) {
-    out.message = fmt::format(
-        "the puncture search closed on a root with the probe above the membrane's first contact "
-        "at {:.6g} N (another branch, not the loading path)",
-        *f_puncture * scale);
-    return out;
-  }
-
   out.status = Status::Converged;
   out.state = to_physical(p, shooting.contact(), sol, stage, options);
   out.force_n = out.state.force_n;

@@ -3,6 +3,8 @@
 // settings of the shooting that finds it.  Lengths are normalised by the stress-free clamp
 // radius A / L0 (A without pre-stretch; SolverScales), stresses by G, the force f by
 // 2 pi G H A / L0.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -73,15 +75,37 @@ inline double max_first_invariant_of(const ScaledSolution& sol) {
   return std::max(sol.max_i1, 2.0 * l3 * l3 + 1.0 / (l3 * l3 * l3 * l3));
 }
 
+// A state that meets the clamp condition, accepted as an equilibrium of the loading path unless
+// it is none: every acceptance (the shooting's judgement, a collapsed bracket, depth control)
+// goes through here.
+//  - A probe pushing the membrane lies below where it first touched (the flat membrane, the
+//    inflated pole): a root with the tip above it is not on the loading path (under pressure,
+//    beyond a limit load or on another inflated branch, Part I can meet the clamp condition
+//    again).  Numerical: the path's state was not found.
+//  - A state whose hoop stress turns compressive (found where the largest I1 was searched)
+//    wrinkles, outside the tension-only theory (the message, with the place in mm, is the
+//    physical state's: to_physical).
+inline void accept_state(ScaledSolution& sol) {
+  sol.message.clear();
+  if (sol.depth < 0.0 && sol.f > 0.0) {
+    sol.status = Status::NoConvergence;
+    sol.message = fmt::format(
+        "the clamp condition is met only by a root with the probe above the membrane's first "
+        "contact (normalised depth {:.3g}, Part III stretch {:.3g}): not on the loading path",
+        sol.depth,
+        sol.part_three_stretch);
+  } else {
+    sol.status = sol.wrinkle_r >= 0.0 ? Status::Wrinkles : Status::Converged;
+  }
+}
+
 // After a bracketing shooting whose bracket has shrunk to adjacent floating-point numbers, the
 // clamp residual left is the integration's noise; when the clamp condition is then met to within
 // a hundred times the tolerance (1e-8 by default) the solution is accepted.
 inline void accept_collapsed_bracket(ScaledSolution& sol, double tol_factor = 100.0) {
   if (sol.status == Status::NoConvergence && sol.integrated &&
-      std::abs(sol.residual) <= tol_factor * sol.shooting_tol) {
-    sol.status = sol.wrinkle_r >= 0.0 ? Status::Wrinkles : Status::Converged;
-    sol.message.clear();
-  }
+      std::abs(sol.residual) <= tol_factor * sol.shooting_tol)
+    accept_state(sol);
 }
 
 }  // namespace puncture::detail

@@ -466,29 +466,15 @@ class IndentationShooting {
   }
   static constexpr double kLockingMargin = 1e-6;
 
-  // An integrated state judged by its clamp residual, and by its hoop stress where the largest
-  // I1 was searched: a state that wrinkles is no tension-only membrane state (the message, with
-  // the place in mm, is the physical state's: to_physical).
+  // An integrated state judged by its clamp residual (and, when it meets it, by accept_state).
   ScaledSolution judged(ScaledSolution sol) const {
     sol.integrated = true;
     sol.shooting_tol = settings().shooting_tol;
-    sol.status = std::abs(sol.residual) <= settings().shooting_tol ? Status::Converged
-                                                                   : Status::NoConvergence;
-    if (!sol.ok()) {
-      sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);
-    } else if (sol.depth < 0.0 && sol.f > 0.0) {
-      // A probe pushing the membrane lies below where it first touched (the flat membrane, the
-      // inflated pole): a root with the tip above it is not on the loading path (under pressure,
-      // beyond a limit load or on another inflated branch, Part I can meet the clamp condition
-      // again).
+    if (std::abs(sol.residual) <= settings().shooting_tol) {
+      accept_state(sol);
+    } else {
       sol.status = Status::NoConvergence;
-      sol.message = fmt::format(
-          "the clamp condition is met only by a root with the probe above the membrane's first "
-          "contact (normalised depth {:.3g}, Part III stretch {:.3g}): not on the loading path",
-          sol.depth,
-          sol.part_three_stretch);
-    } else if (sol.wrinkle_r >= 0.0) {
-      sol.status = Status::Wrinkles;
+      sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);
     }
     return sol;
   }

@@ -52,7 +52,7 @@ std::string summary_of(const Problem& p) {
 
 // Every membrane of the sweep gives a converged state with finite numbers, or a physical
 // failure whose reason is confirmed independently; none fails numerically.  The one known
-// exception, counted apart: inflated membranes, where the 10^4 sweep met about 25 numerical
+// exception, counted apart: inflated membranes, where the 10^4 sweep met 17 numerical
 // failures or unconfirmed ends (mostly large spheres; force searches closing on roots of another
 // inflated branch near Part II's onset; docs/model.md §17): at most 0.5 % of them, so that more
 // fails.
