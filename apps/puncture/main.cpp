@@ -16,6 +16,7 @@
 #include "problem_options.hpp"
 #include "solve_failure.hpp"
 #include "strict_config.hpp"
+#include "suggest.hpp"
 
 namespace {
 
@@ -53,6 +54,7 @@ constexpr const char* kFooter =
     "  indenter-radius = 1\n"
     "  friction = 1.95\n"
     "  stick = \"force:0.5\"\n"
+    "A command's own flags go below a line naming it, e.g. '[state]' then 'force = 2'.\n"
     "Plots (--plot, figures) run Python 3 with matplotlib (Debian: python3-matplotlib;\n"
     "another interpreter: PUNCTURE_PYTHON=/path/to/python3).\n"
     "Exit codes: 0 success, 1 invalid input, 2 the solver gave no usable result,\n"
@@ -73,6 +75,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(0, 1);
     app.footer(kFooter);
     app.get_formatter()->column_width(34);
+    app.set_version_flag("--version", "puncture " PUNCTURE_VERSION, "Print the version and exit");
     app.set_config("--config",
                    "",
                    "Read flags from a TOML/INI file of 'key = value' lines (keys:\n"
@@ -126,6 +129,16 @@ int main(int argc, char** argv) {
       return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
       return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+      return app.exit(e);
+    } catch (const CLI::ExtrasError& e) {
+      // CLI11 names the stray words; a misspelt flag gets its closest name.
+      const std::string unknown = unknown_flags_report(app, argc, argv);
+      fmt::print(stderr,
+                 "puncture: error: {}{}\nRun with --help for more information.\n",
+                 e.what(),
+                 unknown);
+      return kExitBadInput;
     } catch (const CLI::ParseError& e) {
       fmt::print(stderr, "puncture: error: {}\nRun with --help for more information.\n", e.what());
       return kExitBadInput;
@@ -205,7 +218,7 @@ int main(int argc, char** argv) {
     }
     return kExitOk;
   } catch (const InputError& e) {
-    fmt::print(stderr, "puncture: error: {}\n", e.what());
+    report_input_error(e, output_flags);
     return kExitBadInput;
   } catch (const SolveError& e) {
     report_solve_failure(e, output_flags);

@@ -42,4 +42,18 @@ void report_solve_failure(const SolveError& error, const OutputFlags& output) {
   }
 }
 
+void report_input_error(const InputError& error, const OutputFlags& output) {
+  fmt::print(stderr, "puncture: error: {}\n", error.what());
+  // The JSON asked for is only written when the output flags themselves are sound.
+  try {
+    if (format_of(output) != Format::Json) return;
+    const nlohmann::json doc{
+        {"error",
+         {{"status", "invalid_input"}, {"failure_kind", "input"}, {"message", error.what()}}}};
+    write_output(output, doc.dump(2) + "\n");
+  } catch (const std::exception&) {
+    // The error is on stderr already.
+  }
+}
+
 }  // namespace puncture::cli

@@ -9,4 +9,8 @@ namespace puncture::cli {
 
 void report_solve_failure(const SolveError& error, const OutputFlags& output);
 
+// Invalid input, reported the same way: the message on stderr and, with --format json, a
+// document {"error": {"status": "invalid_input", "failure_kind": "input", "message": ...}}.
+void report_input_error(const InputError& error, const OutputFlags& output);
+
 }  // namespace puncture::cli

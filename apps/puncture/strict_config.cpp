@@ -5,6 +5,8 @@
 #include <sstream>
 #include <string>
 
+#include "suggest.hpp"
+
 namespace puncture::cli {
 namespace {
 
@@ -40,17 +42,51 @@ bool StrictConfig::is_flag(const std::string& key) const {
   return false;
 }
 
+void StrictConfig::check_key(const std::string& key, const std::string& section, int number) const {
+  // A dotted key ("state.force") names its section itself.
+  const auto dot = key.rfind('.');
+  const std::string name = dot == std::string::npos ? key : key.substr(dot + 1);
+  const std::string where = dot == std::string::npos ? section : key.substr(0, dot);
+  const auto holder = command_holding(*app_, name);
+  if (!holder) {
+    const auto guess = closest_name(name, long_option_names(*app_));
+    throw CLI::ConfigError(
+        guess ? fmt::format(
+                    "--config line {}: unknown key '{}' (did you mean '{}'?)", number, name, *guess)
+              : fmt::format("--config line {}: unknown key '{}' (keys are the long flag names, "
+                            "see puncture --help)",
+                            number,
+                            name));
+  }
+  // The program's own flags hold everywhere (subcommands accept them too); a subcommand's flag
+  // belongs in that subcommand's section.
+  if (!holder->empty() && where.empty())
+    throw CLI::ConfigError(fmt::format(
+        "--config line {}: '{}' is a flag of the '{}' command: write it below a line '[{}]'",
+        number,
+        name,
+        *holder,
+        *holder));
+}
+
 std::vector<CLI::ConfigItem> StrictConfig::from_config(std::istream& input) const {
   std::ostringstream whole;
   whole << input.rdbuf();
   std::istringstream lines(whole.str());
   std::string line;
+  std::string section;  // the [section] the lines below belong to; "" at the top
   for (int number = 1; std::getline(lines, line); ++number) {
     line = trimmed(line);
-    if (line.empty() || line.front() == '#' || line.front() == ';' || line.front() == '[') continue;
+    if (line.empty() || line.front() == '#' || line.front() == ';') continue;
+    if (line.front() == '[') {
+      section = trimmed(line.substr(
+          1, line.find(']') == std::string::npos ? std::string::npos : line.find(']') - 1));
+      continue;
+    }
     const auto equals = line.find('=');
     if (equals == std::string::npos) {
       std::string key = trimmed(line.substr(0, line.find('#')));
+      if (!key.empty()) check_key(key, section, number);
       if (!key.empty() && !is_flag(key))
         throw CLI::ConfigError(fmt::format(
             "--config line {}: '{}' has no value (write '{} = VALUE'; only flags may stand alone)",
@@ -60,6 +96,7 @@ std::vector<CLI::ConfigItem> StrictConfig::from_config(std::istream& input) cons
       continue;
     }
     const std::string key = trimmed(line.substr(0, equals));
+    check_key(key, section, number);
     const std::string value = trimmed(line.substr(equals + 1));
     if (value.size() > 1 && value.front() == '[')  // an array may run over several lines
       while (line.back() != ']' && std::getline(lines, line)) {
