@@ -74,14 +74,20 @@ std::string summary(const JLimReport& r) {
          "largest I1 at the force",
          num(*e.max_first_invariant_at_force, "largest I1 at the force") +
              " (the paper's check: sliding equilibrium at the measured force)");
+  // The scan's stiff end is no physical bound: as J_lim falls to (critical I1 - 3) the law locks
+  // at the puncture stretch and the puncture force grows without bound.
   line(out,
        "reachable forces",
-       fmt::format("{} N (J_lim = {}) to {} N (J_lim = {}); neo-Hookean limit {} N",
+       fmt::format("{} N (J_lim = {}; neo-Hookean limit {} N) and up, without bound",
                    num(e.smallest_force_n, "smallest force"),
                    num(e.max_j_lim, "largest J_lim"),
-                   num(e.largest_force_n, "largest force"),
-                   fmt::format("{:.8g}", finite(e.min_j_lim, "smallest J_lim")),
                    num(e.neo_hookean_force_n, "neo-Hookean force")));
+  line(out,
+       "",
+       fmt::format("(as J_lim falls to critical I1 - 3 the rubber locks at the puncture stretch; "
+                   "the scan stops at J_lim = {}, {} N)",
+                   fmt::format("{:.8g}", finite(e.min_j_lim, "smallest J_lim")),
+                   num(e.largest_force_n, "largest force")));
   return out;
 }
 
