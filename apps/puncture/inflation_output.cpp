@@ -157,6 +157,12 @@ void inputs(std::string& out, const InflationProblem& p) {
        num(pressure_scale_mpa(p), "pressure scale") + " MPa (normalised pressure = p / this)");
 }
 
+// A pressure in the project's unit (MPa) and in kPa, the unit balloon and bulge tests are read in
+// (and the Python inflation plot's).
+std::string pressure_text(double pressure_mpa, std::string_view what) {
+  return fmt::format("{} MPa ({} kPa)", num(pressure_mpa, what), num(pressure_mpa * 1e3, what));
+}
+
 std::string where_text(const InflationState& s) {
   if (s.max_first_invariant_reference_radius_mm == 0.0) return "the pole (R = 0)";
   return fmt::format("R = {} mm, r = {} mm",
@@ -167,8 +173,8 @@ std::string where_text(const InflationState& s) {
 void state_lines(std::string& out, const InflationState& s) {
   line(out,
        "pressure",
-       fmt::format("{} MPa (p A / G H = {})",
-                   num(s.pressure_mpa, "pressure"),
+       fmt::format("{} (p A / G H = {})",
+                   pressure_text(s.pressure_mpa, "pressure"),
                    num(s.normalized_pressure, "normalised pressure")));
   line(out, "pole stretch", num(s.pole_stretch, "pole stretch"));
   line(out, "pole height", num(s.pole_height_mm, "pole height") + " mm");
@@ -194,8 +200,8 @@ void extremum_lines(std::string& out, const PressureExtremum& e) {
   const bool max = e.kind == ExtremumKind::Maximum;
   line(out,
        max ? "pressure maximum" : "pressure minimum",
-       fmt::format("{} MPa at pole stretch {} (height {} mm, volume {} mm^3)",
-                   num(s.pressure_mpa, "extremum pressure"),
+       fmt::format("{} at pole stretch {} (height {} mm, volume {} mm^3)",
+                   pressure_text(s.pressure_mpa, "extremum pressure"),
                    num(s.pole_stretch, "extremum pole stretch"),
                    num(s.pole_height_mm, "extremum height"),
                    num(s.volume_mm3, "extremum volume")));
@@ -320,8 +326,8 @@ std::string summary(const InflationPressureReport& r) {
   const auto& a = r.result;
   std::string out;
   inputs(out, r.problem);
-  out += fmt::format("States at pressure {} MPa (pole stretch searched from 1 to {}, {})\n",
-                     num(a.pressure_mpa, "pressure"),
+  out += fmt::format("States at pressure {} (pole stretch searched from 1 to {}, {})\n",
+                     pressure_text(a.pressure_mpa, "pressure"),
                      num(a.max_pole_stretch, "search end"),
                      r.to_burst ? "the burst" : "set by --max-pole-stretch");
   line(out,
