@@ -11,6 +11,7 @@
 #include "command_verify.hpp"
 #include "commands.hpp"
 #include "figures.hpp"
+#include "help_formatter.hpp"
 #include "output_options.hpp"
 #include "plot.hpp"
 #include "problem_options.hpp"
@@ -74,6 +75,7 @@ int main(int argc, char** argv) {
     app.fallthrough();  // parent flags are accepted after the subcommand too
     app.require_subcommand(0, 1);
     app.footer(kFooter);
+    app.formatter(std::make_shared<HelpFormatter>());  // before the subcommands: they share it
     app.get_formatter()->column_width(34);
     app.set_version_flag("--version", "puncture " PUNCTURE_VERSION, "Print the version and exit");
     app.set_config("--config",
