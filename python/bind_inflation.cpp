@@ -51,10 +51,10 @@ auto released(F&& f) {
 }
 
 template <class Result>
-py::object with_problem(Result&& result, const InflationProblem& problem) {
+Typed<std::decay_t<Result>> with_problem(Result&& result, const InflationProblem& problem) {
   py::object out = py::cast(std::forward<Result>(result));
   out.attr("problem") = py::cast(InflationProblem(problem));
-  return out;
+  return {out};
 }
 
 InflationCurveOptions range_of(int points, double max_pole_stretch, int scan_points) {

@@ -122,6 +122,37 @@ double hoop_mpa(Material m, double l1, double l2) {
 }
 double first_invariant_of(double l1, double l2) { return first_invariant(l1, l2); }
 
+using Stretches = py::array_t<double, py::array::forcecast>;
+
+// The result of py::vectorize for array arguments, as an array (a 0-d one for scalars).
+py::array_t<double> as_array(py::object result) { return py::array_t<double>::ensure(result); }
+
+// Each elementwise function is defined twice, for floats (-> float) and for arrays or lists
+// (-> numpy.ndarray, broadcast as numpy does): py::vectorize alone documents "-> object".  The
+// float overload takes floats only (noconvert), so a one-element array stays an array.
+template <class Class>
+void def_elementwise(Class& c, const char* name, double (*f)(Material, double), const char* arg,
+                     const char* doc) {
+  c.def(name, f, py::arg(arg).noconvert(), doc);
+  c.def(
+      name,
+      [f](const Material& m, const Stretches& x) { return as_array(py::vectorize(f)(m, x)); },
+      py::arg(arg));
+}
+
+template <class Class>
+void def_elementwise(Class& c, const char* name, double (*f)(Material, double, double),
+                     const char* doc) {
+  c.def(name, f, py::arg("lambda1").noconvert(), py::arg("lambda2").noconvert(), doc);
+  c.def(
+      name,
+      [f](const Material& m, const Stretches& l1, const Stretches& l2) {
+        return as_array(py::vectorize(f)(m, l1, l2));
+      },
+      py::arg("lambda1"),
+      py::arg("lambda2"));
+}
+
 template <class T>
 void copyable(py::class_<T>& c) {
   c.def("__copy__", [](const T& x) { return T(x); });
@@ -300,32 +331,41 @@ void bind_problem(py::module_& m) {
           "I1 at which the law locks: 3 + J_lim for Gent, inf otherwise")
       .def_property_readonly(
           "description", [](const Material& mat) { return describe(mat); }, "in words")
-      .def("uniaxial_stress_mpa",
-           py::vectorize(&uniaxial_mpa),
-           py::arg("stretch"),
-           "Nominal stress [MPa] in uniaxial tension at the given stretch")
-      .def("equibiaxial_stress_mpa",
-           py::vectorize(&equibiaxial_mpa),
-           py::arg("stretch"),
-           "Nominal stress [MPa] in equibiaxial tension (as under the tip)")
-      .def("radial_stress_mpa",
-           py::vectorize(&radial_mpa),
-           py::arg("lambda1"),
-           py::arg("lambda2"),
-           "Membrane nominal stress s1 [MPa] along lambda1 at stretches lambda1, lambda2")
-      .def("hoop_stress_mpa",
-           py::vectorize(&hoop_mpa),
-           py::arg("lambda1"),
-           py::arg("lambda2"),
-           "Membrane nominal stress s2 [MPa] along lambda2 at stretches lambda1, lambda2")
       .def("__repr__", &material_repr);
   copyable(material);
+  def_elementwise(material,
+                  "uniaxial_stress_mpa",
+                  &uniaxial_mpa,
+                  "stretch",
+                  "Nominal stress [MPa] in uniaxial tension at the given stretch");
+  def_elementwise(material,
+                  "equibiaxial_stress_mpa",
+                  &equibiaxial_mpa,
+                  "stretch",
+                  "Nominal stress [MPa] in equibiaxial tension (as under the tip)");
+  def_elementwise(material,
+                  "radial_stress_mpa",
+                  &radial_mpa,
+                  "Membrane nominal stress s1 [MPa] along lambda1 at stretches lambda1, lambda2");
+  def_elementwise(material,
+                  "hoop_stress_mpa",
+                  &hoop_mpa,
+                  "Membrane nominal stress s2 [MPa] along lambda2 at stretches lambda1, lambda2");
 
+  constexpr const char* i1_doc =
+      "I1 = lambda1^2 + lambda2^2 + 1/(lambda1 lambda2)^2 of an incompressible membrane";
   m.def("first_invariant",
-        py::vectorize(&first_invariant_of),
-        py::arg("lambda1"),
-        py::arg("lambda2"),
-        "I1 = lambda1^2 + lambda2^2 + 1/(lambda1 lambda2)^2 of an incompressible membrane");
+        &first_invariant_of,
+        py::arg("lambda1").noconvert(),
+        py::arg("lambda2").noconvert(),
+        i1_doc);
+  m.def(
+      "first_invariant",
+      [](const Stretches& l1, const Stretches& l2) {
+        return as_array(py::vectorize(&first_invariant_of)(l1, l2));
+      },
+      py::arg("lambda1"),
+      py::arg("lambda2"));
 
   py::class_<StickCriterion> stick(
       m,

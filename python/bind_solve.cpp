@@ -69,15 +69,15 @@ Stage automatic_stage(const Problem& problem, double load, bool by_force,
 }
 
 template <class Result>
-py::object with_problem(Result&& result, const Problem& problem) {
+Typed<std::decay_t<Result>> with_problem(Result&& result, const Problem& problem) {
   py::object out = py::cast(std::forward<Result>(result));
   // A copy: py::cast of the caller's Problem would return the caller's own object.
   out.attr("problem") = py::cast(Problem(problem));
-  return out;
+  return {out};
 }
 
-py::object solve_state(const Problem& problem, double load, bool by_force, const StageArg& stage,
-                       const std::optional<SolverOptions>& options) {
+Typed<Equilibrium> solve_state(const Problem& problem, double load, bool by_force,
+                               const StageArg& stage, const std::optional<SolverOptions>& options) {
   check_problem(problem);
   check_load(load, by_force ? "force_n" : "depth_mm", by_force ? "N" : "mm");
   const auto chosen = explicit_stage(stage);

@@ -33,6 +33,31 @@ FitLaw fit_law_of(const std::variant<FitLaw, std::string>& law) {
       "law: expected FitLaw, 'gent', 'neo-hookean' or 'mooney-rivlin', got '{}'", text));
 }
 
+UniaxialFit fit_arrays(const py::array_t<double, py::array::forcecast>& stretch,
+                       const py::array_t<double, py::array::forcecast>& nominal_stress_mpa,
+                       const std::variant<FitLaw, std::string>& law) {
+  const auto l = to_vector(stretch, "stretch");
+  const auto s = to_vector(nominal_stress_mpa, "nominal_stress_mpa");
+  if (l.size() != s.size())
+    throw py::value_error(fmt::format(
+        "stretch and nominal_stress_mpa: need as many values, got {} and {}", l.size(), s.size()));
+  std::vector<UniaxialPoint> data;
+  for (std::size_t i = 0; i < l.size(); ++i) data.push_back({l[i], s[i]});
+  const FitLaw chosen = fit_law_of(law);
+  UniaxialFit fit;
+  as_value_error([&] {
+    py::gil_scoped_release release;
+    fit = fit_uniaxial(data, chosen);
+  });
+  if (!fit.ok())
+    raise_solver_error(fit.status,
+                       fit.message,
+                       fit.status == Status::NoConvergence
+                           ? "the fit did not converge: " + fit.message
+                           : fit.message);
+  return fit;
+}
+
 }  // namespace
 
 void bind_uniaxial(py::module_& m) {
@@ -122,39 +147,25 @@ void bind_uniaxial(py::module_& m) {
       "(stretch, nominal_stress_mpa) arrays from a CSV file with the columns\n"
       "stretch,nominal_stress_mpa, or force_n,displacement_mm and the specimen (as the CLI's\n"
       "`fit uniaxial FILE`).");
+  constexpr const char* fit_doc =
+      "Fit G (and J_lim for 'gent', alpha for 'mooney-rivlin') to a uniaxial test (paper §4.1,\n"
+      "Fig. 11) by Levenberg-Marquardt.  Raises SolverError when the fit does not converge.";
+  m.def("fit_uniaxial",
+        &fit_arrays,
+        py::arg("stretch"),
+        py::arg("nominal_stress_mpa"),
+        py::arg("law") = "gent",
+        fit_doc);
+  // What uniaxial_points(_from_csv) return, passed as it comes.
   m.def(
       "fit_uniaxial",
-      [](const py::array_t<double, py::array::forcecast>& stretch,
-         const py::array_t<double, py::array::forcecast>& nominal_stress_mpa,
-         const std::variant<FitLaw, std::string>& law) {
-        const auto l = to_vector(stretch, "stretch");
-        const auto s = to_vector(nominal_stress_mpa, "nominal_stress_mpa");
-        if (l.size() != s.size())
-          throw py::value_error(
-              fmt::format("stretch and nominal_stress_mpa: need as many values, got {} and {}",
-                          l.size(),
-                          s.size()));
-        std::vector<UniaxialPoint> data;
-        for (std::size_t i = 0; i < l.size(); ++i) data.push_back({l[i], s[i]});
-        const FitLaw chosen = fit_law_of(law);
-        UniaxialFit fit;
-        as_value_error([&] {
-          py::gil_scoped_release release;
-          fit = fit_uniaxial(data, chosen);
-        });
-        if (!fit.ok())
-          raise_solver_error(fit.status,
-                             fit.message,
-                             fit.status == Status::NoConvergence
-                                 ? "the fit did not converge: " + fit.message
-                                 : fit.message);
-        return fit;
+      [](const Points& points, const std::variant<FitLaw, std::string>& law) {
+        return fit_arrays(points.first, points.second, law);
       },
-      py::arg("stretch"),
-      py::arg("nominal_stress_mpa"),
+      py::arg("points"),
       py::arg("law") = "gent",
-      "Fit G (and J_lim for 'gent', alpha for 'mooney-rivlin') to a uniaxial test (paper §4.1,\n"
-      "Fig. 11) by Levenberg-Marquardt.  Raises SolverError when the fit does not converge.");
+      "The same fit of the (stretch, nominal_stress_mpa) pair that uniaxial_points and\n"
+      "uniaxial_points_from_csv return.");
 }
 
 }  // namespace puncture::python::calibration

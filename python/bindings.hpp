@@ -40,6 +40,13 @@ py::array_t<T> column(const Items& items, Get get) {
   return a;
 }
 
+// A Python object holding a T (e.g. with extra attributes set on it), shown as T in the
+// signatures, where a bare py::object would read "-> object".
+template <class T>
+struct Typed {
+  py::object object;
+};
+
 // Raises puncture.SolverError (registered by bind_solve) with .status, .failure_kind and
 // .message (the library's reason); str() is `what`.  Needs the GIL.
 [[noreturn]] void raise_solver_error(Status status, const std::string& message,
@@ -64,3 +71,16 @@ auto raising_value_error(F&& f) {
 }
 
 }  // namespace puncture::python
+
+namespace pybind11::detail {
+
+template <class T>
+struct type_caster<puncture::python::Typed<T>> {
+  PYBIND11_TYPE_CASTER(puncture::python::Typed<T>, make_caster<T>::name);
+  bool load(handle, bool) { return false; }  // a result type only
+  static handle cast(const puncture::python::Typed<T>& src, return_value_policy, handle) {
+    return src.object.inc_ref();
+  }
+};
+
+}  // namespace pybind11::detail
