@@ -62,6 +62,14 @@ constexpr const char* kFooter =
     "3 the plot could not be drawn (no Python or matplotlib), 4 a `verify` check failed or\n"
     "could not be made.";
 
+// The plot_cli.py figure of the parsed calibration, or none.
+const char* calibration_plot_kind(const puncture::cli::CalibrationFlags& f) {
+  if (f.uniaxial->parsed()) return "uniaxial-fit";
+  if (f.band->parsed()) return "band";
+  if (f.jlim->parsed()) return "jlim";
+  return nullptr;
+}
+
 constexpr const char* kSubcommandFooter =
     "The physical, curve and output flags (see puncture --help) may also be given.";
 
@@ -98,7 +106,9 @@ int main(int argc, char** argv) {
                        plot_path,
                        "Also draw the result to FILE (.png, .svg or .pdf) with matplotlib:\n"
                        "curve: force against depth, stages shaded, puncture marked;\n"
-                       "state: deformed profile, stretches and I1 along the radius")
+                       "state: deformed profile, stretches and I1 along the radius;\n"
+                       "fit uniaxial: data, fit and residuals; calibrate band: the\n"
+                       "ranges and puncture points; calibrate jlim: force against J_lim")
             ->group("Output")
             ->type_name("FILE");
     app.add_subcommand("curve", "Loading curve from zero depth to puncture (the default)")
@@ -147,14 +157,23 @@ int main(int argc, char** argv) {
     }
 
     if (calibration_flags.parsed()) {
-      // Refused rather than ignored: no calibration draws a figure yet.
-      if (plot_option->count() > 0)
+      const bool plot = plot_option->count() > 0;
+      const char* kind = calibration_plot_kind(calibration_flags);
+      if (plot && kind == nullptr)  // refused rather than ignored
         throw InputError(
-            "--plot: 'calibrate' and 'fit' draw no figure yet; their --format json output holds "
-            "the numbers to plot");
+            "--plot: draws 'fit uniaxial', 'calibrate band' and 'calibrate jlim'; this "
+            "calibration's --format json output holds its numbers");
+      if (plot) check_plot_target(plot_path);
       const auto format = format_of(output_flags);
       check_writable(output_flags);
-      write_output(output_flags, run_calibration(app, problem_flags, calibration_flags, format));
+      const std::string text = run_calibration(app, problem_flags, calibration_flags, format);
+      write_output(output_flags, text);
+      if (plot)
+        run_plot_script(kind,
+                        format == Format::Json
+                            ? text
+                            : run_calibration(app, problem_flags, calibration_flags, Format::Json),
+                        plot_path);
       return kExitOk;
     }
     if (inflate_flags.parsed()) {

@@ -205,3 +205,41 @@ def test_cli_figures(tmp_path, cli):
     assert sorted({s["radius_ratio"] for s in series}) == [0.04, 0.08, 0.12]
     rc, _, err = cli.run("figures", "--out", out_dir, "--format", "json")
     assert rc == 1 and "--format: does not apply to 'figures'" in err
+
+
+# ----- calibrations: fit uniaxial, calibrate band, calibrate jlim ---------------------------
+
+CLI_DATA = os.path.join(os.path.dirname(__file__), "..", "..", "tests", "cli")
+
+
+@pytest.mark.parametrize("args", [
+    ("fit", "uniaxial", os.path.join(CLI_DATA, "uniaxial_gent.csv")),
+    ("calibrate", "band", "--critical-i1-range", "90,100", "--jlim-range", "110,130"),
+    ("calibrate", "jlim", "--puncture-force", "0.7"),
+], ids=["uniaxial-fit", "band", "jlim"])
+def test_cli_plot_calibrations(tmp_path, cli, args):
+    target = tmp_path / "calibration.png"
+    rc, out, err = cli.run(*args, "--plot", target)
+    assert rc == 0, err
+    assert out  # the report is still written
+    check_png(target)
+
+
+def test_uniaxial_fit_figure_draws_the_cli_numbers(cli):
+    from puncture import calibration_plots
+    data = cli.json("fit", "uniaxial", os.path.join(CLI_DATA, "uniaxial_gent.csv"))
+    fig = calibration_plots.uniaxial_fit(data)
+    top, bottom = fig.axes
+    measured = [p["nominal_stress_mpa"] for p in data["points"]]
+    fitted = [p["fitted_stress_mpa"] for p in data["points"]]
+    assert list(top.lines[0].get_ydata()) == measured
+    assert sorted(top.lines[1].get_ydata()) == sorted(fitted)
+    residuals = bottom.lines[-1].get_ydata()
+    assert list(residuals) == [f - m for f, m in zip(fitted, measured)]
+
+
+def test_cli_plot_refused_where_nothing_is_drawn(tmp_path, cli):
+    rc, _, err = cli.run("calibrate", "friction", "--indenter-radius", "1", "--puncture-force",
+                         "1.72", "--hole-ratio", "1.58", "--plot", tmp_path / "f.png")
+    assert rc == 1 and "--plot: draws 'fit uniaxial', 'calibrate band' and 'calibrate jlim'" in err
+    assert not (tmp_path / "f.png").exists()
