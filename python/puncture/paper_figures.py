@@ -33,7 +33,8 @@ EQUATION_NAMES = {
     "paper-eq18": "paper's Eq. 18 as printed",
 }
 EQUATION_STYLES = {"ring-balance": "-", "paper-eq18": "--"}
-SERIES_COLOURS = ["#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02"]
+# Distinct hues (no two greens): Dark2 without its second green, then brown and grey.
+SERIES_COLOURS = ["#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#e6ab02", "#a6761d", "#666666"]
 
 
 def _values(xs):
@@ -102,6 +103,7 @@ def fig12a(data, *, r_max_factor=1.6):
             c["friction"] == mu and c["part_two_equation"] != "ring-balance"
             and "failure" not in c and _same(c, r, "R_mm", "I1") for c in cases)}
         failed = []
+        past = []  # frictions whose state at this force lies beyond puncture (default equation)
         for c in cases:
             if "failure" in c:
                 failed.append(f"μ' = {c['friction']:g}, {c['part_two_equation']}")
@@ -115,13 +117,20 @@ def fig12a(data, *, r_max_factor=1.6):
                 label = f"μ' = {c['friction']:g}"
                 if c["friction"] in same:
                     label += "\n(no Part II: both equations)"
+                if i1.max() > data["inputs"]["critical_i1"]:
+                    label += " (past puncture)"
+                    past.append(c["friction"])
             ax.plot(r[keep], i1[keep], color=colour[c["friction"]],
                     ls=EQUATION_STYLES.get(c["part_two_equation"], "-"), lw=1.6, label=label)
         critical = data["inputs"]["critical_i1"]
         ax.axhline(critical, color=plots.CRITICAL_COLOUR, ls=":", lw=1.2,
                    label=f"critical I1 = {critical:g}")
+        # The paper draws these states at one force whatever their puncture; above the critical
+        # I1 the membrane would have punctured at a smaller force.
+        top = ax.get_ylim()[1]
+        ax.axhspan(critical, 2.0 * top, color=plots.CRITICAL_COLOUR, alpha=0.06, lw=0, zorder=0)
         ax.set_xlim(0, r_max_factor * a)
-        ax.set_ylim(bottom=0)
+        ax.set_ylim(0, top)
         ax.set_xlabel("reference radius R [mm]")
         ax.set_ylabel("first invariant I1")
         # Outside the axes: the curves fill the plot.
@@ -129,6 +138,11 @@ def fig12a(data, *, r_max_factor=1.6):
         ax.add_artist(first)
         _equation_legend(ax, loc="lower left", bbox_to_anchor=(1.02, 0.0))
         note = f"; no solution: {', '.join(failed)}" if failed else ""
+        if past:
+            ax.text(0.99, 0.985, "shaded: I1 above critical, states past puncture\n(the membrane "
+                    "would have punctured at a smaller force;\ndrawn at this force as in the "
+                    "paper)", transform=ax.transAxes, ha="right", va="top", fontsize=8.5,
+                    color=plots.CRITICAL_COLOUR)
         ax.set_title(
             f"Fig. 12(a): I1 near the tip at F / 2πGHA = {d['normalized_force']:g}, "
             f"a = {a:g} mm (a/A = {a / big_a:.2g}){note}\n{_membrane(data)}")
@@ -187,7 +201,7 @@ def _draw_fig13_panel(ax, panel, *, legend_fontsize=None):
         depth, force = _values(c["depth_mm"]), _values(c["force_n"])
         colour = "black" if eq == "ring-balance" else "#1f5fa8"
         p = c.get("puncture")
-        text = (f"{EQUATION_NAMES[eq]}: puncture {p['force_n']:.3g} N at {p['depth_mm']:.3g} mm"
+        text = (f"{EQUATION_NAMES[eq]}:\npuncture {p['force_n']:.3g} N at {p['depth_mm']:.3g} mm"
                 if p else EQUATION_NAMES[eq])
         (line,) = ax.plot(depth, force, color=colour, ls=EQUATION_STYLES[eq], lw=1.6,
                           label=text)
@@ -198,8 +212,20 @@ def _draw_fig13_panel(ax, panel, *, legend_fontsize=None):
     mark = Line2D([], [], ls="none", marker="X", color=plots.CRITICAL_COLOUR, ms=9,
                   mec="white", label="predicted puncture (I1 = critical I1)")
     handles.append(mark)
-    ax.set_xlim(left=0)
-    ax.set_ylim(bottom=0)
+    # The axes fit the default (solid) curve: the printed equation's dashed curve runs on to a
+    # far deeper puncture (its numbers are in the legend) and would squeeze the default one into
+    # a corner.
+    if ring and "failure" not in ring:
+        depth, force = _values(ring["depth_mm"]), _values(ring["force_n"])
+        ax.set_xlim(0, 1.35 * depth.max())
+        ax.set_ylim(0, 1.75 * force.max())  # head room for the legend
+        for line in handles[1:-1]:  # the other equation's curve, if drawn
+            x, y = line.get_xdata(), line.get_ydata()
+            if x.max() > ax.get_xlim()[1] or y.max() > ax.get_ylim()[1]:
+                line.set_label(line.get_label() + " (off the axes)")
+    else:
+        ax.set_xlim(left=0)
+        ax.set_ylim(bottom=0)
     ax.set_xlabel("indentation depth δ [mm]")
     ax.set_ylabel("indenter force F [N]")
     ax.legend(handles=handles, loc="upper left", framealpha=0.9, fontsize=legend_fontsize)
