@@ -56,6 +56,7 @@ std::optional<Stage> explicit_stage(const StageArg& stage) {
 Stage automatic_stage(const Problem& problem, double load, bool by_force,
                       const SolverOptions& options) {
   const auto b = stick_slip_boundary(problem, options);
+  if (b.status == Status::OutsideModel) throw SolverFailure(b.status, b.message, b.message);
   if (b.status != Status::Converged)
     throw SolverFailure(
         b.status,

@@ -21,6 +21,9 @@ struct StageChoice {
 // --stage auto: the stage the problem's stick criterion gives at this load.
 StageChoice automatic_stage(const Problem& problem, const StateFlags& f, bool by_force) {
   const auto b = stick_slip_boundary(problem);
+  // Outside the model is the problem's own verdict (e.g. an overhanging inflated dome), not a
+  // failure to find the switch.
+  if (b.status == Status::OutsideModel) throw SolveError(b.message, b.status);
   if (b.status != Status::Converged)
     throw SolveError(
         fmt::format(
