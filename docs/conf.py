@@ -66,20 +66,21 @@ def _generated_pages(app, docname, source):
         missing = [h for h in headers if _group_id(h) not in listed]
         if missing:
             source[0] += "\nOther headers\n-------------\n\n" + "".join(
-                f"``{h}``\n{'~' * (len(h) + 4)}\n\n.. doxygengroup:: {_group_id(h)}\n"
-                "   :content-only:\n\n" for h in missing)
+                f"``{h}``\n{'~' * (len(h) + 4)}\n\n.. doxygengroup:: {_group_id(h)}\n\n"
+                for h in missing)
 
 
-class ExampleOutput(SphinxDirective):
-    """`.. example-output:: NAME`: what the example program NAME printed when the docs were
-    built (scripts/build-docs.sh runs every example), as a literal block."""
+class RunOutput(SphinxDirective):
+    """`.. run-output:: NAME`: what a program printed when the docs were built, as a literal
+    block: scripts/build-docs.sh runs every example (NAME: the example's, e.g. 01_puncture_point)
+    and the CLI's first run (puncture_puncture)."""
     required_arguments = 1
 
     def run(self):
-        path = docs_build / "generated" / "examples" / (self.arguments[0] + ".txt")
+        path = docs_build / "generated" / "output" / (self.arguments[0] + ".txt")
         if not path.exists():
-            raise self.error(f"no output of the example {self.arguments[0]}: {path} is missing "
-                             "(scripts/build-docs.sh runs the built examples)")
+            raise self.error(f"no output of {self.arguments[0]}: {path} is missing "
+                             "(scripts/build-docs.sh runs the built programs)")
         self.env.note_dependency(str(path))
         text = path.read_text(encoding="utf-8")
         block = nodes.literal_block(text, text)
@@ -89,4 +90,4 @@ class ExampleOutput(SphinxDirective):
 
 def setup(app):
     app.connect("source-read", _generated_pages)
-    app.add_directive("example-output", ExampleOutput)
+    app.add_directive("run-output", RunOutput)

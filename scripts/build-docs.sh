@@ -4,7 +4,8 @@
 #      docs/doxygen_filter.py (the headers' plain comments are their documentation);
 #   2. docs/cli_reference.py writes the CLI reference from BUILD_DIR/apps/puncture/puncture's own
 #      --help, every command and subcommand found from the top-level help;
-#   3. the examples (BUILD_DIR/examples/) run, for the output their tutorials show;
+#   3. the examples (BUILD_DIR/examples/) and `puncture puncture` run, for the output the pages
+#      show;
 #   4. Sphinx (with MyST for the Markdown pages and Breathe for the API) writes the HTML.
 # Any warning of Doxygen or Sphinx fails the build (exit 1).  Needs the built `puncture` program
 # and examples, and the Debian packages doxygen, python3-sphinx, python3-breathe, python3-myst-parser
@@ -68,20 +69,22 @@ EOF
 # The CLI reference, from the program's own help.
 "$python" "$root/docs/cli_reference.py" "$cli" "$out/generated/cli.rst"
 
-# The tutorials' examples, run for the output they show (in parallel: each is one thread).
-mkdir -p "$out/generated/examples"
-pids=()
+# The output the pages show: the tutorials' examples and the program's puncture point, run in
+# parallel (each is one thread).
+mkdir -p "$out/generated/output"
+"$cli" puncture >"$out/generated/output/puncture_puncture.txt" &
+pids=("$!:puncture puncture")
 for source in "$root"/examples/[0-9][0-9]_*.cpp; do
   name="$(basename "$source" .cpp)"
   if [[ ! -x "$build/examples/$name" ]]; then
     echo "build-docs.sh: $build/examples/$name not found: build the examples first" >&2
     exit 1
   fi
-  (cd "$out/generated/examples" && timeout 300 "$build/examples/$name" >"$name.txt") &
+  (cd "$out/generated/output" && timeout 300 "$build/examples/$name" >"$name.txt") &
   pids+=("$!:$name")
 done
 for job in "${pids[@]}"; do
-  wait "${job%%:*}" || { echo "build-docs.sh: the example ${job#*:} failed" >&2; exit 1; }
+  wait "${job%%:*}" || { echo "build-docs.sh: ${job#*:} failed" >&2; exit 1; }
 done
 
 # Sphinx: warnings are errors, all of them reported before failing.
