@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,8 +14,11 @@ int main(int argc, char** argv) {
   const std::string path = argc > 1 ? argv[1] : PUNCTURE_EXAMPLE_DATA "/tensile_test.csv";
   const puncture::SpecimenGeometry strip{10.0, 0.2, 20.0};  // width, thickness, gauge [mm]
   std::vector<puncture::UniaxialPoint> data;                // stretch and nominal stress [MPa]
-  try {  // columns displacement_mm,force_n ('#' comments allowed)
-    data = puncture::uniaxial_points_from_table(puncture::read_numeric_csv(path, 3), strip);
+  try {  // columns displacement_mm,force_n or stretch,nominal_stress_mpa ('#' comments allowed)
+    const auto table = puncture::read_numeric_csv(path, 3);
+    const bool forces = table.has("force_n");  // forces need the strip's dimensions
+    data =
+        puncture::uniaxial_points_from_table(table, forces ? std::optional{strip} : std::nullopt);
   } catch (const std::exception& e) {  // CsvError names the file, line and column
     fmt::print(stderr, "{}\n", e.what());
     return 1;
