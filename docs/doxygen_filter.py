@@ -110,7 +110,7 @@ def filter_header(path, lines):
             while j < len(lines) and COMMENT_ONLY.match(lines[j]) and not RULER.match(lines[j]):
                 j += 1
             follows = lines[j] if j < len(lines) else ""
-            documents = follows.strip() != "" and not follows.lstrip().startswith("#")
+            documents = follows.strip() != "" and not follows.lstrip().startswith(("#", "}"))
             for k in range(i, j):
                 indent, text = COMMENT_ONLY.match(lines[k]).groups()
                 out.append(indent + ("///" + escape(text) if documents else "//" + text))

@@ -30,6 +30,7 @@ struct Geometry {
     // inside a body: left alone
     return true;
   }
+  // A closing remark of the struct.
 };
 
 }  // namespace puncture
@@ -68,6 +69,8 @@ class DoxygenFilterTest(unittest.TestCase):
                          "// A section heading, followed by a blank line.")
         self.assertFalse(any("-----" in line for line in self.out))
         self.assertEqual(self.line_with("inside a body").strip(), "// inside a body: left alone")
+        self.assertEqual(self.line_with("closing remark").strip(),
+                         "// A closing remark of the struct.")
 
     def test_a_comment_in_a_string_is_code(self):
         self.assertEqual(doxygen_filter.split_code_comment('s = "a // b";  // note'),
