@@ -9,8 +9,8 @@ ignores.  This filter rewrites them on the fly, so that the headers stay as they
   - a comment block directly above a declaration documents it (`///`);
   - a comment after a declaration documents it (`///<`), with its continuation lines (comment-only
     lines starting in the same column);
-  - a comment block followed by a blank line (a section heading) and comments inside function
-    bodies stay plain comments; `// ----` rulers are dropped.
+  - a comment block followed by a blank line (a section heading) or by the end of its scope,
+    and comments inside function bodies, stay plain comments; `// ----` rulers are dropped.
 
 Doxygen's special characters in the comments' text are escaped, so that "c <= 0" or "#13" stay
 text.  Usage (Doxyfile): INPUT_FILTER = "/usr/bin/python3 docs/doxygen_filter.py".
