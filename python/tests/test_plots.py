@@ -205,6 +205,26 @@ def test_cli_figures(tmp_path, cli):
     assert sorted({s["radius_ratio"] for s in series}) == [0.04, 0.08, 0.12]
     rc, _, err = cli.run("figures", "--out", out_dir, "--format", "json")
     assert rc == 1 and "--format: does not apply to 'figures'" in err
+    # Drawn as a reader needs them: Fig. 13's axes fit the default (solid) curve, not the
+    # printed equation's far deeper one; Fig. 12(a) names the states past puncture; Fig. 12(b)
+    # is sampled finely enough (0.01 in friction) not to cut the bends where Part II vanishes.
+    from puncture import paper_figures
+    fig = paper_figures.fig13_panel(data, "b")
+    ax = fig.axes[0]
+    depth = max(ring["depth_mm"])
+    assert depth < ax.get_xlim()[1] <= 1.5 * depth
+    assert max(eq18["depth_mm"]) > ax.get_xlim()[1]
+    assert any("off the axes" in t.get_text() for t in ax.get_legend().get_texts())
+    from matplotlib.legend import Legend
+    fig = paper_figures.fig12a(data)
+    friction_legend = next(c for c in fig.axes[0].get_children()
+                           if isinstance(c, Legend) and c.get_title().get_text() == "friction")
+    labels = [t.get_text() for t in friction_legend.get_texts()]
+    assert any("(past puncture)" in t for t in labels)
+    colours = [line.get_color() for line in friction_legend.get_lines() if line.get_ls() == "-"]
+    assert len(colours) >= 5 and len(set(colours)) == len(colours)
+    frictions = series[0]["friction"]
+    assert max(b - a for a, b in zip(frictions, frictions[1:])) <= 0.01 + 1e-12
 
 
 # ----- calibrations: fit uniaxial, calibrate band, calibrate jlim ---------------------------
