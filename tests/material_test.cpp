@@ -182,6 +182,45 @@ TEST(ClosedForms, UniaxialAndEquibiaxialStressOfEveryLaw) {
   }
 }
 
+// Arruda-Boyce (N = 30) against an independent evaluation: mpmath at 40 digits, its own inverse
+// Langevin by findroot and the stress as mpmath's derivative of W/G = (3 N / g0)(h(x) - h(x0)).
+// Agreement to 1e-13 relative (the library's Newton and series are exact to rounding).
+TEST(ArrudaBoyceClosedForm, MatchesAnIndependentHighPrecisionEvaluation) {
+  const ArrudaBoyce law{30.0};
+  EXPECT_NEAR(strain_energy_density(MaterialLaw{law}, 2.0, 1.5), 1.7007219850528718269, 1e-13);
+  EXPECT_NEAR(uniaxial_stress(law, 3.0), 3.033637094252964937, 3e-13);
+  EXPECT_NEAR(equibiaxial_stress(law, 4.0), 5.2003796977193492661, 5e-13);
+}
+
+TEST(ArrudaBoyceClosedForm, InverseApproachesTheLockingStretch) {
+  const MaterialLaw law{ArrudaBoyce{30.0}};
+  const double lock = locking_radial_stretch(ArrudaBoyce{30.0}, 1.0);
+  EXPECT_NEAR(first_invariant(lock, 1.0), 90.0, 1e-12);
+  const auto l1 = radial_stretch_for_stress(law, 1e8, 1.0);
+  ASSERT_TRUE(l1.has_value());
+  EXPECT_LT(*l1, lock);
+  EXPECT_GT(*l1, lock * (1.0 - 1e-6));
+}
+
+// Ogden's uniaxial stress in closed form, s = sum_p m_p (l^(alpha_p - 1) - l^(-alpha_p/2 - 1)),
+// and Gent-Gent's, s = 2 (l - l^-2)(W1 + W2 / l) with W1 = (1 - beta) / (2 (1 - (I1 - 3) / J)),
+// W2 = 3 beta / (2 I2), I1 = l^2 + 2 / l, I2 = 2 l + l^-2: to 1e-12 relative.
+TEST(ClosedForms, OgdenAndGentGentUniaxialStress) {
+  const Ogden ogden = std::get<Ogden>(ogden_material({0.63, 0.0012, -0.01}, {1.3, 5.0, -2.0}).law);
+  const GentGent gg{125.0, 0.2};
+  for (double l : {1.05, 1.5, 3.0, 6.0}) {
+    double s = 0.0;
+    for (std::size_t p = 0; p < 3; ++p)
+      s += ogden.mu[p] *
+           (std::pow(l, ogden.alpha[p] - 1.0) - std::pow(l, -0.5 * ogden.alpha[p] - 1.0));
+    EXPECT_NEAR(uniaxial_stress(ogden, l), s, 1e-12 * std::abs(s)) << l;
+    const double i1 = l * l + 2.0 / l, i2 = 2.0 * l + 1.0 / (l * l);
+    const double w1 = 0.8 / (2.0 * (1.0 - (i1 - 3.0) / 125.0)), w2 = 0.3 / i2;
+    const double sg = 2.0 * (l - 1.0 / (l * l)) * (w1 + w2 / l);
+    EXPECT_NEAR(uniaxial_stress(gg, l), sg, 1e-12 * sg) << l;
+  }
+}
+
 // Yeoh without its higher terms is neo-Hookean: the same stresses to the bit, so the same
 // solutions (here the whole puncture prediction).
 TEST(Reductions, YeohWithoutHigherTermsIsNeoHookean) {

@@ -179,10 +179,10 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
   app.add_option("--material",
                  f.material,
                  "Strain-energy law: gent (the paper's, locks at I1 = 3 + J_lim),\n"
-                 "neo-hookean, mooney-rivlin (with --mr-alpha), yeoh (with --yeoh),\n"
-                 "ogden (with --ogden-mu, --ogden-alpha), arruda-boyce (with\n"
-                 "--chain-segments or --chain-stretch; locks at I1 = 3 N) or gent-gent\n"
-                 "(Gent plus a ln(I2/3) term: --jlim, --i2-share)")
+                 "neo-hookean, mooney-rivlin (with --mr-alpha), yeoh (with\n"
+                 "--yeoh), ogden (with --ogden-mu, --ogden-alpha), arruda-boyce\n"
+                 "(with --chain-segments or --chain-stretch; locks at I1 = 3 N)\n"
+                 "or gent-gent (Gent plus a ln(I2/3) term: --jlim, --i2-share)")
       ->group(kMaterial)
       ->check(CLI::IsMember(
           {"gent", "neo-hookean", "mooney-rivlin", "yeoh", "ogden", "arruda-boyce", "gent-gent"}))
@@ -211,36 +211,36 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
       app.add_option("--ogden-mu",
                      f.ogden_mu_mpa,
                      "Ogden coefficients mu_1,...,mu_N of W = sum mu_p / alpha_p\n"
-                     "(l1^alpha_p + l2^alpha_p + l3^alpha_p - 3) [MPa] (N = 1 to 3, one per\n"
-                     "--ogden-alpha; each mu_p alpha_p > 0; sets G = sum mu_p alpha_p / 2, so\n"
-                     "no --shear-modulus; ogden only)")
+                     "(l1^alpha_p + l2^alpha_p + l3^alpha_p - 3) [MPa] (N = 1 to 3,\n"
+                     "one per --ogden-alpha; each mu_p alpha_p > 0; sets\n"
+                     "G = sum mu_p alpha_p / 2, so no --shear-modulus; ogden only)")
           ->delimiter(',')
           ->group(kMaterial);
-  f.ogden_alpha_option =
-      app.add_option("--ogden-alpha",
-                     f.ogden_alpha,
-                     "Ogden exponents alpha_1,...,alpha_N [dimensionless] (|alpha_p| >= 1;\n"
-                     "ogden only)")
-          ->delimiter(',')
-          ->group(kMaterial);
+  f.ogden_alpha_option = app.add_option("--ogden-alpha",
+                                        f.ogden_alpha,
+                                        "Ogden exponents alpha_1,...,alpha_N [dimensionless]\n"
+                                        "(|alpha_p| >= 1; ogden only)")
+                             ->delimiter(',')
+                             ->group(kMaterial);
   f.chain_segments_option =
       app.add_option("--chain-segments",
                      f.chain_segments,
-                     "Arruda-Boyce N, Kuhn segments per chain [dimensionless] (> 1; the\n"
-                     "law locks at I1 = 3 N; arruda-boyce only, or --chain-stretch)")
+                     "Arruda-Boyce N, Kuhn segments per chain [dimensionless]\n"
+                     "(> 1; the law locks at I1 = 3 N; arruda-boyce only, or\n"
+                     "--chain-stretch)")
           ->group(kMaterial);
   f.chain_stretch_option =
       app.add_option("--chain-stretch",
                      f.chain_stretch,
-                     "Arruda-Boyce chain locking stretch sqrt(N) [dimensionless] (> 1;\n"
-                     "arruda-boyce only, or --chain-segments)")
+                     "Arruda-Boyce chain locking stretch sqrt(N) [dimensionless]\n"
+                     "(> 1; arruda-boyce only, or --chain-segments)")
           ->group(kMaterial);
   f.gent_gent_beta_option =
       app.add_option("--i2-share",
                      f.gent_gent_beta,
                      "Gent-Gent share of G in the ln(I2/3) term, beta = 2 C2 / (3 G)\n"
-                     "[dimensionless] (in [0, 1), and small enough that the radial stress\n"
-                     "grows with stretch; 0 is Gent; gent-gent only)")
+                     "[dimensionless] (in [0, 1), and small enough that the radial\n"
+                     "stress grows with stretch; 0 is Gent; gent-gent only)")
           ->group(kMaterial)
           ->capture_default_str();
 
@@ -253,7 +253,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
   app.add_option("--critical-i1",
                  f.critical_i1,
                  "First strain invariant I1 at which the membrane punctures\n"
-                 "[dimensionless] (> 3, and < 3 + J_lim for gent)")
+                 "[dimensionless] (> 3; < 3 + J_lim for gent and gent-gent, < 3 N\n"
+                 "for arruda-boyce)")
       ->group(kContact)
       ->capture_default_str();
   app.add_option("--stick",
