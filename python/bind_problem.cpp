@@ -1,6 +1,7 @@
 // What a user specifies: Geometry, the material laws and Material, StickCriterion, Problem, and
 // the solver's tolerances (SolverOptions).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/stl.h>
 
 #include <array>
@@ -8,6 +9,7 @@
 #include <string_view>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "bindings.hpp"
 #include "puncture/material.hpp"
@@ -67,6 +69,13 @@ std::string law_repr(const MaterialLaw& law) {
           return fmt::format("MooneyRivlin(alpha={:g})", l.alpha);
         if constexpr (std::is_same_v<L, Yeoh>)
           return fmt::format("Yeoh(c2={:g}, c3={:g})", l.c2, l.c3);
+        if constexpr (std::is_same_v<L, Ogden>)
+          return fmt::format(
+              "Ogden(mu=[{:g}], alpha=[{:g}])", fmt::join(l.mu, ", "), fmt::join(l.alpha, ", "));
+        if constexpr (std::is_same_v<L, ArrudaBoyce>)
+          return fmt::format("ArrudaBoyce(n={:g})", l.n);
+        if constexpr (std::is_same_v<L, GentGent>)
+          return fmt::format("GentGent(j_lim={:g}, beta={:g})", l.j_lim, l.beta);
         return "NeoHookean()";
       },
       law);
@@ -258,6 +267,53 @@ void bind_problem(py::module_& m) {
       .def_readwrite("c3", &Yeoh::c3, "C30 / G")
       .def("__repr__", [](const Yeoh& y) { return law_repr(y); });
   copyable(yeoh);
+  py::class_<Ogden> ogden(
+      m,
+      "Ogden",
+      "Ogden law W/G = sum mu_p/alpha_p (l1^alpha_p + l2^alpha_p + l3^alpha_p - 3), 1 to 3\n"
+      "terms, mu holding mu_p / G (sum mu_p alpha_p = 2; each mu_p alpha_p > 0,\n"
+      "|alpha_p| >= 1).  Material.ogden(mu_mpa, alpha) takes the MPa values.");
+  ogden
+      .def(py::init([](std::vector<double> mu, std::vector<double> alpha) {
+             return Ogden{std::move(mu), std::move(alpha)};
+           }),
+           py::arg("mu") = Ogden{}.mu,
+           py::arg("alpha") = Ogden{}.alpha)
+      .def_readwrite("mu", &Ogden::mu, "mu_p / G (a copy: assign a new list to change it)")
+      .def_readwrite("alpha", &Ogden::alpha, "exponents alpha_p")
+      .def("__repr__", [](const Ogden& o) { return law_repr(o); });
+  copyable(ogden);
+  py::class_<ArrudaBoyce> arruda_boyce(
+      m,
+      "ArrudaBoyce",
+      "Arruda-Boyce eight-chain law with N Kuhn segments per chain (> 1), scaled to the\n"
+      "initial shear modulus G; locks at I1 = 3 N (chain stretch sqrt(N))");
+  arruda_boyce
+      .def(py::init([](double n) { return ArrudaBoyce{n}; }), py::arg("n") = ArrudaBoyce{}.n)
+      .def_static(
+          "from_chain_stretch",
+          [](double chain_stretch) { return ArrudaBoyce{chain_stretch * chain_stretch}; },
+          py::arg("chain_stretch"),
+          "the law whose chains lock at stretch sqrt(N) = chain_stretch")
+      .def_readwrite("n", &ArrudaBoyce::n, "Kuhn segments per chain N")
+      .def_property_readonly("chain_stretch", &ArrudaBoyce::chain_stretch, "sqrt(N)")
+      .def("__repr__", [](const ArrudaBoyce& a) { return law_repr(a); });
+  copyable(arruda_boyce);
+  py::class_<GentGent> gent_gent(
+      m,
+      "GentGent",
+      "Gent-Gent law (Pucci & Saccomandi 2002) W/G = -(1 - beta)(J_lim/2) ln(1 - (I1 - 3)/J_lim)\n"
+      "+ (3 beta/2) ln(I2/3), beta = 2 C2 / (3 G) in [0, 1); beta = 0 is Gent");
+  gent_gent
+      .def(py::init([](double j_lim, double beta) {
+             return GentGent{j_lim, beta};
+           }),
+           py::arg("j_lim") = GentGent{}.j_lim,
+           py::arg("beta") = GentGent{}.beta)
+      .def_readwrite("j_lim", &GentGent::j_lim, "limiting value of I1 - 3")
+      .def_readwrite("beta", &GentGent::beta, "share of G in the ln(I2/3) term")
+      .def("__repr__", [](const GentGent& g) { return law_repr(g); });
+  copyable(gent_gent);
 
   py::class_<Material> material(m, "Material", "Shear modulus [MPa] and strain-energy law");
   material
@@ -302,6 +358,14 @@ void bind_problem(py::module_& m) {
           py::arg("c20_mpa") = 0.0,
           py::arg("c30_mpa") = 0.0,
           "Yeoh rubber from C10, C20, C30 [MPa]: G = 2 C10")
+      .def_static(
+          "ogden",
+          [](const std::vector<double>& mu_mpa, const std::vector<double>& alpha) {
+            return raising_value_error([&] { return ogden_material(mu_mpa, alpha); });
+          },
+          py::arg("mu_mpa"),
+          py::arg("alpha"),
+          "Ogden rubber from mu_p [MPa] and alpha_p (1 to 3 terms): G = sum mu_p alpha_p / 2")
       .def_readwrite(
           "shear_modulus_mpa", &Material::shear_modulus_mpa, "initial shear modulus G [MPa]")
       .def_property(

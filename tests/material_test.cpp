@@ -14,7 +14,7 @@ namespace {
 
 template <class Law>
 double energy(const Law& law, double l1, double l2) {
-  return law.derivatives(first_invariant(l1, l2), second_invariant(l1, l2)).w;
+  return strain_energy_density(law, l1, l2, first_invariant(l1, l2));
 }
 
 template <class Law>
@@ -24,10 +24,14 @@ class MaterialLawTest : public ::testing::Test {
     if constexpr (std::is_same_v<Law, Gent>) return Gent{125.0};
     if constexpr (std::is_same_v<Law, MooneyRivlin>) return MooneyRivlin{0.2};
     if constexpr (std::is_same_v<Law, Yeoh>) return Yeoh{0.05, 0.001};
+    if constexpr (std::is_same_v<Law, Ogden>)  // Ogden's (1972) fit to Treloar, mu_p / G
+      return std::get<Ogden>(ogden_material({0.63, 0.0012, -0.01}, {1.3, 5.0, -2.0}).law);
+    if constexpr (std::is_same_v<Law, ArrudaBoyce>) return ArrudaBoyce{30.0};
+    if constexpr (std::is_same_v<Law, GentGent>) return GentGent{125.0, 0.2};
     return Law{};
   }
 };
-using Laws = ::testing::Types<Gent, NeoHookean, MooneyRivlin, Yeoh>;
+using Laws = ::testing::Types<Gent, NeoHookean, MooneyRivlin, Yeoh, Ogden, ArrudaBoyce, GentGent>;
 TYPED_TEST_SUITE(MaterialLawTest, Laws);
 
 // Central differences with step h have error O(h^2 W''') ~ 1e-10 relative at h = 1e-5, plus
@@ -65,6 +69,31 @@ TYPED_TEST(MaterialLawTest, JacobianMatchesFiniteDifferences) {
       EXPECT_NEAR(st.ds1_dl2, d12, kFdTol * (1.0 + std::abs(d12)));
       EXPECT_NEAR(st.ds1_dl2, d21, kFdTol * (1.0 + std::abs(d21)));  // symmetry of the Hessian
       EXPECT_NEAR(st.ds2_dl2, d22, kFdTol * (1.0 + std::abs(d22)));
+    }
+  }
+}
+
+// The Jacobian straight from the energy: second central differences of W with step h = 1e-4
+// have error O(h^2 W'''') ~ 1e-8 relative plus round-off eps W / h^2 ~ 2e-8 W, so 1e-6 relative
+// (W, its derivatives O(1) to O(100) on this grid) has an order of margin.
+TYPED_TEST(MaterialLawTest, JacobianIsTheEnergysSecondDerivative) {
+  const auto law = TestFixture::law();
+  const double h = 1e-4;
+  for (double l1 : {0.8, 1.0, 1.3, 2.5, 5.0}) {
+    for (double l2 : {0.9, 1.0, 1.7, 3.0}) {
+      if (first_invariant(l1 + h, l2 + h) >= law.locking_i1() - 1.0) continue;
+      const auto st = membrane_stress(law, l1, l2);
+      const auto w = [&](double a, double b) { return energy(law, a, b); };
+      const double w0 = w(l1, l2);
+      const double d11 = (w(l1 + h, l2) - 2.0 * w0 + w(l1 - h, l2)) / (h * h);
+      const double d22 = (w(l1, l2 + h) - 2.0 * w0 + w(l1, l2 - h)) / (h * h);
+      const double d12 =
+          (w(l1 + h, l2 + h) - w(l1 + h, l2 - h) - w(l1 - h, l2 + h) + w(l1 - h, l2 - h)) /
+          (4.0 * h * h);
+      const double tol = 1e-6 * (1.0 + std::abs(w0));
+      EXPECT_NEAR(st.ds1_dl1, d11, tol * (1.0 + std::abs(d11))) << l1 << " " << l2;
+      EXPECT_NEAR(st.ds1_dl2, d12, tol * (1.0 + std::abs(d12))) << l1 << " " << l2;
+      EXPECT_NEAR(st.ds2_dl2, d22, tol * (1.0 + std::abs(d22))) << l1 << " " << l2;
     }
   }
 }
@@ -150,6 +179,45 @@ TEST(ClosedForms, UniaxialAndEquibiaxialStressOfEveryLaw) {
     const double x_uni = l * l + 2.0 / l - 3.0, x_equi = 2.0 * l * l + std::pow(l, -4.0) - 3.0;
     EXPECT_NEAR(uniaxial_stress(Yeoh{c2, c3}, l), 2.0 * w1(x_uni) * uni, tol * w1(x_uni));
     EXPECT_NEAR(equibiaxial_stress(Yeoh{c2, c3}, l), 2.0 * w1(x_equi) * equi, tol * w1(x_equi));
+  }
+}
+
+// Arruda-Boyce (N = 30) against an independent evaluation: mpmath at 40 digits, its own inverse
+// Langevin by findroot and the stress as mpmath's derivative of W/G = (3 N / g0)(h(x) - h(x0)).
+// Agreement to 1e-13 relative (the library's Newton and series are exact to rounding).
+TEST(ArrudaBoyceClosedForm, MatchesAnIndependentHighPrecisionEvaluation) {
+  const ArrudaBoyce law{30.0};
+  EXPECT_NEAR(strain_energy_density(MaterialLaw{law}, 2.0, 1.5), 1.7007219850528718269, 1e-13);
+  EXPECT_NEAR(uniaxial_stress(law, 3.0), 3.033637094252964937, 3e-13);
+  EXPECT_NEAR(equibiaxial_stress(law, 4.0), 5.2003796977193492661, 5e-13);
+}
+
+TEST(ArrudaBoyceClosedForm, InverseApproachesTheLockingStretch) {
+  const MaterialLaw law{ArrudaBoyce{30.0}};
+  const double lock = locking_radial_stretch(ArrudaBoyce{30.0}, 1.0);
+  EXPECT_NEAR(first_invariant(lock, 1.0), 90.0, 1e-12);
+  const auto l1 = radial_stretch_for_stress(law, 1e8, 1.0);
+  ASSERT_TRUE(l1.has_value());
+  EXPECT_LT(*l1, lock);
+  EXPECT_GT(*l1, lock * (1.0 - 1e-6));
+}
+
+// Ogden's uniaxial stress in closed form, s = sum_p m_p (l^(alpha_p - 1) - l^(-alpha_p/2 - 1)),
+// and Gent-Gent's, s = 2 (l - l^-2)(W1 + W2 / l) with W1 = (1 - beta) / (2 (1 - (I1 - 3) / J)),
+// W2 = 3 beta / (2 I2), I1 = l^2 + 2 / l, I2 = 2 l + l^-2: to 1e-12 relative.
+TEST(ClosedForms, OgdenAndGentGentUniaxialStress) {
+  const Ogden ogden = std::get<Ogden>(ogden_material({0.63, 0.0012, -0.01}, {1.3, 5.0, -2.0}).law);
+  const GentGent gg{125.0, 0.2};
+  for (double l : {1.05, 1.5, 3.0, 6.0}) {
+    double s = 0.0;
+    for (std::size_t p = 0; p < 3; ++p)
+      s += ogden.mu[p] *
+           (std::pow(l, ogden.alpha[p] - 1.0) - std::pow(l, -0.5 * ogden.alpha[p] - 1.0));
+    EXPECT_NEAR(uniaxial_stress(ogden, l), s, 1e-12 * std::abs(s)) << l;
+    const double i1 = l * l + 2.0 / l, i2 = 2.0 * l + 1.0 / (l * l);
+    const double w1 = 0.8 / (2.0 * (1.0 - (i1 - 3.0) / 125.0)), w2 = 0.3 / i2;
+    const double sg = 2.0 * (l - 1.0 / (l * l)) * (w1 + w2 / l);
+    EXPECT_NEAR(uniaxial_stress(gg, l), sg, 1e-12 * sg) << l;
   }
 }
 

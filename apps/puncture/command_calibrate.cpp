@@ -274,10 +274,11 @@ std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format f
 FitLaw fit_law_of(const std::string& material) {
   if (material == "neo-hookean") return FitLaw::NeoHookean;
   if (material == "mooney-rivlin") return FitLaw::MooneyRivlin;
-  if (material == "yeoh")
-    throw InputError(
-        "--material: `fit uniaxial` fits gent, neo-hookean and mooney-rivlin; yeoh is not "
-        "fitted yet");
+  if (material != "gent")
+    throw InputError(fmt::format(
+        "--material: `fit uniaxial` fits gent, neo-hookean and mooney-rivlin; {} is not fitted "
+        "yet",
+        material));
   return FitLaw::Gent;
 }
 

@@ -46,6 +46,18 @@ json material_json(const Material& m, bool with_j_lim) {
     material["c20_mpa"] = finite(yeoh->c2 * m.shear_modulus_mpa, "Yeoh C20");
     material["c30_mpa"] = finite(yeoh->c3 * m.shear_modulus_mpa, "Yeoh C30");
   }
+  if (const auto* ogden = std::get_if<Ogden>(&m.law)) {  // mu_p = (mu_p / G) G
+    json mu = json::array();
+    for (const double x : ogden->mu) mu.push_back(finite(x * m.shear_modulus_mpa, "Ogden mu"));
+    material["mu_mpa"] = mu;
+    material["alpha"] = ogden->alpha;
+  }
+  if (const auto* ab = std::get_if<ArrudaBoyce>(&m.law))
+    material["chain_segments"] = finite(ab->n, "Arruda-Boyce N");
+  if (const auto* gg = std::get_if<GentGent>(&m.law)) {
+    material["j_lim"] = finite(gg->j_lim, "J_lim");
+    material["beta"] = finite(gg->beta, "Gent-Gent beta");
+  }
   return material;
 }
 

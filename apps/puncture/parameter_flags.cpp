@@ -12,7 +12,7 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 28> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 31> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
@@ -26,6 +26,9 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 28> kFlagOfP
     {"material.law.alpha", "--mr-alpha"},
     {"material.law.c2", "--yeoh"},
     {"material.law.c3", "--yeoh"},
+    {"material.law.mu", "--ogden-mu"},  // material.law.alpha of Ogden: problem_options.cpp
+    {"material.law.n", "--chain-segments"},
+    {"material.law.beta", "--i2-share"},
     {"friction", "--friction"},
     {"critical_i1", "--critical-i1"},
     {"stick.threshold", "--stick"},

@@ -20,20 +20,80 @@ constexpr const char* kGeometry = "Geometry";
 constexpr const char* kMaterial = "Material";
 constexpr const char* kContact = "Contact and failure";
 
+bool given(const CLI::Option* o) { return o && o->count() > 0; }
+
+// Ogden from --ogden-mu [MPa] and --ogden-alpha: G = sum mu_p alpha_p / 2 (so --shear-modulus
+// is refused); the terms' own conditions are the library's.
+Material ogden_of(const ProblemFlags& f, std::vector<std::string>& errors) {
+  Material m;
+  if (!given(f.ogden_mu_option) || !given(f.ogden_alpha_option)) {
+    errors.push_back(
+        "--ogden-mu, --ogden-alpha: --material ogden needs both lists, mu_1,...,mu_N [MPa] and "
+        "alpha_1,...,alpha_N, N = 1 to 3");
+    return m;
+  }
+  if (given(f.shear_modulus_option))
+    errors.push_back(
+        "--shear-modulus: with --ogden-mu the shear modulus is G = sum mu_p alpha_p / 2; do not "
+        "give it too");
+  try {
+    m = ogden_material(f.ogden_mu_mpa, f.ogden_alpha);
+  } catch (const InvalidInput& e) {
+    for (const auto& error : e.errors())
+      errors.push_back(fmt::format(
+          "{}: {}", error.parameter == "alpha" ? "--ogden-alpha" : "--ogden-mu", error.message));
+  }
+  return m;
+}
+
+// Arruda-Boyce from --chain-segments N or --chain-stretch sqrt(N), one of them.
+ArrudaBoyce arruda_boyce_of(const ProblemFlags& f, std::vector<std::string>& errors) {
+  if (given(f.chain_segments_option) == given(f.chain_stretch_option)) {
+    errors.push_back(
+        "--chain-segments, --chain-stretch: --material arruda-boyce needs one of them, N or the "
+        "chain locking stretch sqrt(N)");
+    return {};
+  }
+  if (!given(f.chain_stretch_option)) return ArrudaBoyce{f.chain_segments};
+  const double l = f.chain_stretch;
+  if (!std::isfinite(l) || !(l > 1.0))
+    errors.push_back(fmt::format(
+        "--chain-stretch: the chain locking stretch must be a finite number > 1, got {}", l));
+  return ArrudaBoyce{l * l};
+}
+
 // The material the flags describe: --shear-modulus and the law's flags, or --yeoh's C10, C20,
-// C30 (G = 2 C10).
+// C30 (G = 2 C10), or Ogden's lists.
 Material material_of(const ProblemFlags& f, std::vector<std::string>& errors) {
-  const auto given = [](const CLI::Option* o) { return o && o->count() > 0; };
-  if (f.material != "gent" && given(f.j_lim_option))
-    errors.push_back(fmt::format("--jlim: applies only to --material gent, not {}", f.material));
+  if (f.material != "gent" && f.material != "gent-gent" && given(f.j_lim_option))
+    errors.push_back(
+        fmt::format("--jlim: applies only to --material gent and gent-gent, not {}", f.material));
   if (f.material != "mooney-rivlin" && given(f.mr_alpha_option))
     errors.push_back(
         fmt::format("--mr-alpha: applies only to --material mooney-rivlin, not {}", f.material));
   if (f.material != "yeoh" && given(f.yeoh_option))
     errors.push_back(fmt::format("--yeoh: applies only to --material yeoh, not {}", f.material));
+  for (const auto& [option, flag] : {std::pair{f.ogden_mu_option, "--ogden-mu"},
+                                     std::pair{f.ogden_alpha_option, "--ogden-alpha"}})
+    if (f.material != "ogden" && given(option))
+      errors.push_back(
+          fmt::format("{}: applies only to --material ogden, not {}", flag, f.material));
+  for (const auto& [option, flag] : {std::pair{f.chain_segments_option, "--chain-segments"},
+                                     std::pair{f.chain_stretch_option, "--chain-stretch"}})
+    if (f.material != "arruda-boyce" && given(option))
+      errors.push_back(
+          fmt::format("{}: applies only to --material arruda-boyce, not {}", flag, f.material));
+  if (f.material != "gent-gent" && given(f.gent_gent_beta_option))
+    errors.push_back(
+        fmt::format("--i2-share: applies only to --material gent-gent, not {}", f.material));
   Material m;
   m.shear_modulus_mpa = f.shear_modulus_mpa;
-  if (f.material == "neo-hookean") {
+  if (f.material == "ogden") return ogden_of(f, errors);
+  if (f.material == "arruda-boyce") {
+    m.law = arruda_boyce_of(f, errors);
+  } else if (f.material == "gent-gent") {
+    m.law = GentGent{f.j_lim, f.gent_gent_beta};
+  } else if (f.material == "neo-hookean") {
     m.law = NeoHookean{};
   } else if (f.material == "mooney-rivlin") {
     m.law = MooneyRivlin{f.mr_alpha};
@@ -119,14 +179,18 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
   app.add_option("--material",
                  f.material,
                  "Strain-energy law: gent (the paper's, locks at I1 = 3 + J_lim),\n"
-                 "neo-hookean, mooney-rivlin (with --mr-alpha) or yeoh (with --yeoh)")
+                 "neo-hookean, mooney-rivlin (with --mr-alpha), yeoh (with\n"
+                 "--yeoh), ogden (with --ogden-mu, --ogden-alpha), arruda-boyce\n"
+                 "(with --chain-segments or --chain-stretch; locks at I1 = 3 N)\n"
+                 "or gent-gent (Gent plus a ln(I2/3) term: --jlim, --i2-share)")
       ->group(kMaterial)
-      ->check(CLI::IsMember({"gent", "neo-hookean", "mooney-rivlin", "yeoh"}))
+      ->check(CLI::IsMember(
+          {"gent", "neo-hookean", "mooney-rivlin", "yeoh", "ogden", "arruda-boyce", "gent-gent"}))
       ->capture_default_str();
   f.j_lim_option = app.add_option("--jlim",
                                   f.j_lim,
                                   "Gent locking parameter J_lim: the largest I1 - 3\n"
-                                  "[dimensionless] (> 0; gent only)")
+                                  "[dimensionless] (> 0; gent and gent-gent only)")
                        ->group(kMaterial)
                        ->capture_default_str();
   f.mr_alpha_option = app.add_option("--mr-alpha",
@@ -143,6 +207,42 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "G = 2 C10; yeoh only)")
           ->delimiter(',')
           ->group(kMaterial);
+  f.ogden_mu_option =
+      app.add_option("--ogden-mu",
+                     f.ogden_mu_mpa,
+                     "Ogden coefficients mu_1,...,mu_N of W = sum mu_p / alpha_p\n"
+                     "(l1^alpha_p + l2^alpha_p + l3^alpha_p - 3) [MPa] (N = 1 to 3,\n"
+                     "one per --ogden-alpha; each mu_p alpha_p > 0; sets\n"
+                     "G = sum mu_p alpha_p / 2, so no --shear-modulus; ogden only)")
+          ->delimiter(',')
+          ->group(kMaterial);
+  f.ogden_alpha_option = app.add_option("--ogden-alpha",
+                                        f.ogden_alpha,
+                                        "Ogden exponents alpha_1,...,alpha_N [dimensionless]\n"
+                                        "(|alpha_p| >= 1; ogden only)")
+                             ->delimiter(',')
+                             ->group(kMaterial);
+  f.chain_segments_option =
+      app.add_option("--chain-segments",
+                     f.chain_segments,
+                     "Arruda-Boyce N, Kuhn segments per chain [dimensionless]\n"
+                     "(> 1; the law locks at I1 = 3 N; arruda-boyce only, or\n"
+                     "--chain-stretch)")
+          ->group(kMaterial);
+  f.chain_stretch_option =
+      app.add_option("--chain-stretch",
+                     f.chain_stretch,
+                     "Arruda-Boyce chain locking stretch sqrt(N) [dimensionless]\n"
+                     "(> 1; arruda-boyce only, or --chain-segments)")
+          ->group(kMaterial);
+  f.gent_gent_beta_option =
+      app.add_option("--i2-share",
+                     f.gent_gent_beta,
+                     "Gent-Gent share of G in the ln(I2/3) term, beta = 2 C2 / (3 G)\n"
+                     "[dimensionless] (in [0, 1), and small enough that the radial\n"
+                     "stress grows with stretch; 0 is Gent; gent-gent only)")
+          ->group(kMaterial)
+          ->capture_default_str();
 
   app.add_option("--friction",
                  f.friction,
@@ -153,7 +253,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
   app.add_option("--critical-i1",
                  f.critical_i1,
                  "First strain invariant I1 at which the membrane punctures\n"
-                 "[dimensionless] (> 3, and < 3 + J_lim for gent)")
+                 "[dimensionless] (> 3; < 3 + J_lim for gent and gent-gent, < 3 N\n"
+                 "for arruda-boyce)")
       ->group(kContact)
       ->capture_default_str();
   app.add_option("--stick",
@@ -209,17 +310,38 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
 
 }  // namespace
 
+namespace {
+
+// The library names Ogden's exponents and Mooney-Rivlin's share both material.law.alpha: with
+// --material ogden its flag is --ogden-alpha (moved to the CLI's own, worded errors).
+std::vector<ValidationError> with_law_flags(std::vector<ValidationError> validation,
+                                            const ProblemFlags& f,
+                                            std::vector<std::string>& errors) {
+  if (f.material != "ogden") return validation;
+  std::vector<ValidationError> rest;
+  for (auto& e : validation)
+    if (e.parameter == "material.law.alpha")
+      errors.push_back("--ogden-alpha: " + e.message);
+    else
+      rest.push_back(std::move(e));
+  return rest;
+}
+
+}  // namespace
+
 Problem make_problem(const ProblemFlags& f) {
   std::vector<std::string> errors;
   const Problem p = problem_of(f, errors);
-  throw_if_invalid("invalid input:", errors, validation_errors(p));
+  const auto validation = with_law_flags(validation_errors(p), f, errors);
+  throw_if_invalid("invalid input:", errors, validation);
   return p;
 }
 
 Problem make_problem(const ProblemFlags& f, Unknown unknown) {
   std::vector<std::string> errors;
   const Problem p = problem_of(f, errors);
-  throw_if_invalid("invalid input:", errors, validation_errors(p, unknown));
+  const auto validation = with_law_flags(validation_errors(p, unknown), f, errors);
+  throw_if_invalid("invalid input:", errors, validation);
   return p;
 }
 
@@ -242,7 +364,8 @@ InflationProblem make_inflation_problem(const ProblemFlags& f) {
   p.material = material_of(f, errors);
   p.critical_i1 = f.critical_i1;
   p.prestretch = f.prestretch;
-  throw_if_invalid("invalid input:", errors, validation_errors(p));
+  const auto validation = with_law_flags(validation_errors(p), f, errors);
+  throw_if_invalid("invalid input:", errors, validation);
   return p;
 }
 

@@ -22,7 +22,12 @@ struct ProblemFlags {
   std::string material = "gent";
   double j_lim = Gent{}.j_lim;
   double mr_alpha = MooneyRivlin{}.alpha;
-  std::vector<double> yeoh_mpa;  // C10, C20, C30 [MPa]
+  std::vector<double> yeoh_mpa;      // C10, C20, C30 [MPa]
+  std::vector<double> ogden_mu_mpa;  // mu_p [MPa]
+  std::vector<double> ogden_alpha;   // alpha_p [dimensionless]
+  double chain_segments = ArrudaBoyce{}.n;
+  double chain_stretch = ArrudaBoyce{}.chain_stretch();
+  double gent_gent_beta = GentGent{}.beta;
   double friction = defaults.friction;
   double critical_i1 = defaults.critical_i1;
   std::string stick = "none";
@@ -31,6 +36,11 @@ struct ProblemFlags {
   CLI::Option* mr_alpha_option = nullptr;
   CLI::Option* shear_modulus_option = nullptr;
   CLI::Option* yeoh_option = nullptr;
+  CLI::Option* ogden_mu_option = nullptr;
+  CLI::Option* ogden_alpha_option = nullptr;
+  CLI::Option* chain_segments_option = nullptr;
+  CLI::Option* chain_stretch_option = nullptr;
+  CLI::Option* gent_gent_beta_option = nullptr;
   CLI::Option* prestretch_option = nullptr;
   CLI::Option* pressure_option = nullptr;
 };
@@ -50,7 +60,7 @@ Problem make_problem(const ProblemFlags& flags, Unknown unknown);
 // Throws InputError like make_problem.
 InflationProblem make_inflation_problem(const ProblemFlags& flags);
 
-// The strain-energy law the material flags describe (--material, --jlim, --mr-alpha).  Throws
+// The strain-energy law the material flags describe (--material and the law's flags).  Throws
 // InputError for a flag that does not apply to the law; its parameters' ranges are the
 // library's to check.
 MaterialLaw make_law(const ProblemFlags& flags);

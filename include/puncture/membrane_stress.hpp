@@ -5,6 +5,7 @@
 // with the Jacobian needed by the Part I and Part II ODEs and by the inverse lambda1(s1, lambda2).
 // All stresses are divided by the shear modulus G.
 #include <cmath>
+#include <concepts>
 
 namespace puncture {
 
@@ -36,8 +37,19 @@ constexpr bool depends_on_i2() {
     return true;
 }
 
+// A law written in principal stretches (Ogden) gives its membrane stresses and its energy W / G
+// directly; every other law is W(I1, I2) and gives derivatives(I1, I2) (invariant_derivatives.hpp).
 template <class Law>
-MembraneStress membrane_stress(const Law& law, double l1, double l2) {
+concept PrincipalStretchLaw = requires(const Law& law, double l) {
+  { law.stresses(l, l) } -> std::same_as<MembraneStress>;
+  { law.energy(l, l) } -> std::convertible_to<double>;
+};
+
+namespace detail {
+
+// The stresses of a law W(I1, I2) through the derivatives of the invariants.
+template <class Law>
+MembraneStress invariant_membrane_stress(const Law& law, double l1, double l2) {
   // Two divisions only: this runs at every stage of every integration step.
   const double il1 = 1.0 / l1, il2 = 1.0 / l2;
   const double l1s = l1 * l1, l2s = l2 * l2, il1s = il1 * il1, il2s = il2 * il2;
@@ -68,6 +80,26 @@ MembraneStress membrane_stress(const Law& law, double l1, double l2) {
     s.ds2_dl2 += 2.0 * d.w12 * a2 * b2 + d.w22 * b2 * b2 + d.w2 * b22;
   }
   return s;
+}
+
+}  // namespace detail
+
+template <class Law>
+MembraneStress membrane_stress(const Law& law, double l1, double l2) {
+  if constexpr (PrincipalStretchLaw<Law>)
+    return law.stresses(l1, l2);
+  else
+    return detail::invariant_membrane_stress(law, l1, l2);
+}
+
+// W / G at the stretches; `i1` is their first invariant, which the callers already hold (an
+// invariant law reads W from it and I2; a law in principal stretches does not need it).
+template <class Law>
+double strain_energy_density(const Law& law, double l1, double l2, double i1) {
+  if constexpr (PrincipalStretchLaw<Law>)
+    return law.energy(l1, l2);
+  else
+    return law.derivatives(i1, second_invariant(l1, l2)).w;
 }
 
 // Largest radial stretch lambda1 at hoop stretch l2 before the law locks (infinity if it never

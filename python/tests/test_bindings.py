@@ -341,3 +341,30 @@ def test_pressurised_membrane_matches_cli_and_starts_from_the_inflated_dome(cli)
                                                                      rel=1e-12)
     with pytest.raises(ValueError, match="pressure"):
         pu.solve_at_depth(pu.Problem(preload=pu.Preload(pressure_mpa=-1.0)), 1.0)
+
+
+def test_ogden_arruda_boyce_and_gent_gent_match_cli(cli):
+    # Ogden's (1972) three-term fit to Treloar: G = sum mu_p alpha_p / 2 = 0.4225 MPa
+    m = pu.Material.ogden(mu_mpa=[0.63, 0.0012, -0.01], alpha=[1.3, 5, -2])
+    assert m.shear_modulus_mpa == pytest.approx(0.4225, rel=1e-15)
+    assert isinstance(m.law, pu.Ogden) and m.law_name == "ogden"
+    assert sum(mu * a for mu, a in zip(m.law.mu, m.law.alpha)) == pytest.approx(2, rel=1e-15)
+    prediction = pu.predict_puncture(pu.Problem(material=m))
+    from_cli = cli.json("puncture", "--material", "ogden", "--ogden-mu", "0.63,0.0012,-0.01",
+                        "--ogden-alpha", "1.3,5,-2")
+    assert rel(prediction.force_n, from_cli["puncture"]["force_n"]) < 1e-12
+    ab = pu.Problem(material=pu.Material(0.06, pu.ArrudaBoyce.from_chain_stretch(7)))
+    assert ab.material.law.n == pytest.approx(49, rel=1e-15)
+    from_cli = cli.json("puncture", "--material", "arruda-boyce", "--chain-stretch", "7")
+    assert rel(pu.predict_puncture(ab).force_n, from_cli["puncture"]["force_n"]) < 1e-12
+    gg = pu.Problem(material=pu.Material(0.06, pu.GentGent(j_lim=125, beta=0.2)))
+    from_cli = cli.json("puncture", "--material", "gent-gent", "--i2-share", "0.2")
+    assert rel(pu.predict_puncture(gg).force_n, from_cli["puncture"]["force_n"]) < 1e-12
+    # one Ogden term with alpha = 2 is neo-Hookean (rounding), Gent-Gent with beta = 0 is Gent
+    one = pu.Problem(material=pu.Material.ogden(mu_mpa=[0.06], alpha=[2]))  # G = 0.06 MPa
+    neo = pu.Problem(material=pu.Material.neo_hookean())
+    assert rel(pu.predict_puncture(one).force_n, pu.predict_puncture(neo).force_n) < 1e-10
+    plain = pu.Problem(material=pu.Material(0.06, pu.GentGent(beta=0)))
+    assert pu.predict_puncture(plain).force_n == pu.predict_puncture(pu.Problem()).force_n
+    with pytest.raises(ValueError, match="alpha"):
+        pu.Material.ogden(mu_mpa=[0.1, 0.2], alpha=[2])

@@ -100,8 +100,8 @@ bool stretches_at(const ElementPlace& place, const std::array<T, kMaxLocal>& loc
 // W / G at the stretches, with the derivatives carried through the stretches.
 inline Dual strain_energy(const MaterialLaw& law, const Dual& l1, const Dual& l2, bool& locked) {
   const double a = l1.value().value(), b = l2.value().value();
-  const double i1 = first_invariant(a, b), i2 = second_invariant(a, b);
-  const double w = std::visit([&](const auto& m) { return m.derivatives(i1, i2).w; }, law);
+  const double i1 = first_invariant(a, b);
+  const double w = strain_energy_density(law, a, b);
   locked = !std::isfinite(w) || i1 >= locking_first_invariant(law);
   const MembraneStress s = membrane_stress(law, a, b);
   const Vector& da = l1.value().derivatives();
@@ -146,8 +146,7 @@ inline double element_energy_value(const MaterialLaw& law, const ElementPlace& p
       return std::numeric_limits<double>::infinity();
     const double i1 = first_invariant(l1, l2);
     if (i1 >= locking_first_invariant(law)) return std::numeric_limits<double>::infinity();
-    const double i2 = second_invariant(l1, l2);
-    const double w = std::visit([&](const auto& m) { return m.derivatives(i1, i2).w; }, law);
+    const double w = strain_energy_density(law, l1, l2);
     if (!std::isfinite(w)) return std::numeric_limits<double>::infinity();
     total += w * weight * w_gauss;
   }

@@ -115,9 +115,7 @@ FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::Vector
   // Held, the membrane under the tip is not meshed: it keeps the pre-stretch L0 (homogeneous) and
   // stores W(L0, L0) over the disc R < a / L0 (nothing without pre-stretch).
   if (contact == FeContact::Held && s.clamp != 1.0) {
-    const double i1 = first_invariant(s.clamp, s.clamp), i2 = second_invariant(s.clamp, s.clamp);
-    const double w = std::visit([&](const auto& law) { return law.derivatives(i1, i2).w; },
-                                problem.material.law);
+    const double w = strain_energy_density(problem.material.law, s.clamp, s.clamp);
     const double r = s.held() * A;
     state.stored_energy_nmm += std::numbers::pi * r * r * problem.geometry.thickness_mm *
                                problem.material.shear_modulus_mpa * w;

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <utility>
 
+#include "mechanics/falling_stress.hpp"
 #include "mechanics/membrane_validation.hpp"
 #include "puncture/membrane_stress.hpp"
 
@@ -20,6 +21,61 @@ void require_positive(std::vector<ValidationError>& errors, std::string paramete
   if (!std::isfinite(value) || value <= 0.0)
     errors.push_back({std::move(parameter),
                       fmt::format("{} must be a finite number > 0 {}, got {}", name, unit, value)});
+}
+
+// Ogden (materials/ogden.hpp): 1 to 3 terms, one exponent per coefficient, the consistency
+// condition sum mu_p alpha_p = 2 G (mu holds mu_p / G), and each term with mu_p alpha_p > 0 and
+// |alpha_p| >= 1, which makes s1 grow with lambda1 and keeps the wrinkling sign rule.
+static void append_ogden_errors(std::vector<ValidationError>& errors, const Ogden& ogden) {
+  if (ogden.mu.size() != ogden.alpha.size()) {
+    errors.push_back({"material.law.alpha",
+                      fmt::format("Ogden needs one exponent alpha_p per coefficient mu_p: got {} "
+                                  "mu and {} alpha",
+                                  ogden.mu.size(),
+                                  ogden.alpha.size())});
+    return;
+  }
+  if (ogden.mu.empty() || ogden.mu.size() > 3) {
+    errors.push_back(
+        {"material.law.mu",
+         fmt::format("Ogden takes 1 to 3 terms (mu_p, alpha_p), got {}", ogden.mu.size())});
+    return;
+  }
+  double twice = 0.0;  // sum mu_p alpha_p / G
+  for (std::size_t p = 0; p < ogden.mu.size(); ++p) {
+    const double m = ogden.mu[p], a = ogden.alpha[p];
+    twice += m * a;
+    if (!std::isfinite(m) || !std::isfinite(a))
+      errors.push_back({"material.law.mu",
+                        fmt::format("Ogden term {}: mu_p and alpha_p must be finite numbers, got "
+                                    "mu_p = {}, alpha_p = {}",
+                                    p + 1,
+                                    m,
+                                    a)});
+    else if (!(m * a > 0.0))
+      errors.push_back(
+          {"material.law.mu",
+           fmt::format("Ogden term {}: mu_p alpha_p must be > 0 (each term's share of the "
+                       "shear modulus; with mu_p alpha_p <= 0 the term softens the membrane as "
+                       "it stretches and its hoop stress loses the sign the solver relies on), "
+                       "got mu_p alpha_p = {:g} G",
+                       p + 1,
+                       m * a)});
+    else if (!(std::abs(a) >= 1.0))
+      errors.push_back(
+          {"material.law.alpha",
+           fmt::format("Ogden term {}: |alpha_p| must be >= 1 (with |alpha_p| < 1 the term's "
+                       "radial stress falls at large stretch, a material instability the "
+                       "membrane theory cannot follow), got alpha_p = {:g}",
+                       p + 1,
+                       a)});
+  }
+  if (std::isfinite(twice) && !(std::abs(twice - 2.0) <= 1e-12 * 2.0))
+    errors.push_back({"material.law.mu",
+                      fmt::format("Ogden's mu_p / G must satisfy sum mu_p alpha_p / G = 2 (G = "
+                                  "sum mu_p alpha_p / 2 is the shear modulus; ogden_material() "
+                                  "builds the law from MPa values), got {:.17g}",
+                                  twice)});
 }
 
 void append_material_errors(std::vector<ValidationError>& errors, const Material& material) {
@@ -48,6 +104,37 @@ void append_material_errors(std::vector<ValidationError>& errors, const Material
                          name,
                          value)});
   }
+  if (const auto* ogden = std::get_if<Ogden>(&material.law)) append_ogden_errors(errors, *ogden);
+  if (const auto* ab = std::get_if<ArrudaBoyce>(&material.law)) {
+    if (!std::isfinite(ab->n) || ab->n <= 1.0)
+      errors.push_back({"material.law.n",
+                        fmt::format("Arruda-Boyce N (Kuhn segments per chain, the chain locking "
+                                    "stretch squared) must be a finite number > 1, got {}",
+                                    ab->n)});
+  }
+  if (const auto* gg = std::get_if<GentGent>(&material.law)) {
+    if (!std::isfinite(gg->j_lim) || gg->j_lim <= 0.0)
+      errors.push_back({"material.law.j_lim",
+                        fmt::format("J_lim must be a finite number > 0, got {}", gg->j_lim)});
+    if (!std::isfinite(gg->beta) || gg->beta < 0.0 || gg->beta >= 1.0)
+      errors.push_back(
+          {"material.law.beta",
+           fmt::format("Gent-Gent beta = 2 C2 / (3 G), the I2 term's share of G, must be in "
+                       "[0, 1), got {}",
+                       gg->beta)});
+    else if (std::isfinite(gg->j_lim) && gg->j_lim > 0.0)
+      if (const auto at = where_radial_stress_falls(*gg))
+        errors.push_back(
+            {"material.law.beta",
+             fmt::format("Gent-Gent beta = {:g} is too large for J_lim = {:g}: the concave "
+                         "ln(I2) term makes the radial stress fall as the membrane stretches "
+                         "(at lambda1 = {:.3g}, lambda2 = {:.3g}), a material instability the "
+                         "membrane theory cannot follow",
+                         gg->beta,
+                         gg->j_lim,
+                         at->first,
+                         at->second)});
+  }
 }
 
 void append_critical_i1_errors(std::vector<ValidationError>& errors, double critical_i1,
@@ -56,12 +143,16 @@ void append_critical_i1_errors(std::vector<ValidationError>& errors, double crit
   if (!std::isfinite(critical_i1) || critical_i1 <= 3.0)
     errors.push_back({"critical_i1",
                       fmt::format("critical I1 must be a finite number > 3, got {}", critical_i1)});
-  else if (critical_i1 >= i1_max)
+  else if (critical_i1 >= i1_max) {
+    const auto [name, formula] = locking_limit_words(law);
     errors.push_back(
         {"critical_i1",
-         fmt::format("critical I1 must be below the Gent locking limit 3 + J_lim = {:g}, got {:g}",
+         fmt::format("critical I1 must be below the {} locking limit {} = {:g}, got {:g}",
+                     name,
+                     formula,
                      i1_max,
                      critical_i1)});
+  }
 }
 
 void append_prestretch_errors(std::vector<ValidationError>& errors, const char* parameter,

@@ -45,8 +45,9 @@ void check_curve_options(const InflationProblem& problem, const InflationCurveOp
     throw InvalidInput(
         "max_pole_stretch",
         fmt::format(
-            "max pole stretch must be below the pole stretch at which the Gent law locks ({:.6g}), "
+            "max pole stretch must be below the pole stretch at which the {} law locks ({:.6g}), "
             "got {}",
+            locking_limit_words(problem.material.law).first,
             lock,
             m));
 }

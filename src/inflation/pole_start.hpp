@@ -46,7 +46,7 @@ std::optional<PoleStart> pole_start(const Law& law, double l0, double pressure, 
   const double g = TransverseLoad{0.0, pressure}.vertical(l2 * eps);  // P r^2 / 2
   if (!(s_total > g)) return std::nullopt;
   const double t = std::sqrt((s_total - g) * (s_total + g));
-  const double w0 = law.derivatives(st.i1, second_invariant(l0, l0)).w;
+  const double w0 = strain_energy_density(law, l0, l0, st.i1);
   const double e2 = eps * eps;
   PoleStart start{eps,
                   {t,

@@ -227,11 +227,14 @@ ScaledInflation solve_inflation(const InflationProblem& problem, double l0,
   }
   if (!(first_invariant(l0, l0) < locking_first_invariant(law))) {
     sol.status = Status::BeyondLocking;
+    const auto [name, formula] = locking_limit_words(law);
     sol.message = fmt::format(
-        "pole stretch {:g} is at or beyond the Gent locking limit (pole stretch {:.6g}, I1 = 3 "
-        "+ J_lim = {:g})",
+        "pole stretch {:g} is at or beyond the {} locking limit (pole stretch {:.6g}, I1 = {} = "
+        "{:g})",
         l0,
+        name,
         locking_pole_stretch(law),
+        formula,
         locking_first_invariant(law));
     return sol;
   }

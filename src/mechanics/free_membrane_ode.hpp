@@ -52,7 +52,7 @@ struct FreeMembraneSystem {
     dx[3] = l1 * sin_phi;
     if constexpr (Layout::integrals) {
       dx[4] = std::numbers::pi * r * r * l1 * sin_phi;
-      dx[5] = law.derivatives(st.i1, second_invariant(l1, l2)).w * r_ref;
+      dx[5] = strain_energy_density(law, l1, l2, st.i1) * r_ref;
     }
   }
 };

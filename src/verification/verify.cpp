@@ -55,9 +55,7 @@ std::optional<double> depth_range(const Problem& q, std::string& why) {
 double prestretch_energy_nmm(const Problem& q) {
   const double l0 = q.preload.prestretch;
   if (l0 == 1.0) return 0.0;
-  const double i1 = first_invariant(l0, l0), i2 = second_invariant(l0, l0);
-  const double w =
-      std::visit([&](const auto& law) { return law.derivatives(i1, i2).w; }, q.material.law);
+  const double w = strain_energy_density(q.material.law, l0, l0);
   const double r = reference_clamp_radius_mm(q);
   return std::numbers::pi * r * r * q.geometry.thickness_mm * q.material.shear_modulus_mpa * w;
 }

@@ -29,14 +29,16 @@ inline std::vector<std::pair<std::string, MaterialLaw>> laws() {
           {"gent-stiff", Gent{20.0}},
           {"neo-hookean", NeoHookean{}},
           {"mooney-rivlin", MooneyRivlin{0.1}},
-          {"yeoh", Yeoh{0.05, 0.001}}};
+          {"yeoh", Yeoh{0.05, 0.001}},
+          // Ogden's (1972) three-term fit to Treloar, as mu_p / G
+          {"ogden", std::get<Ogden>(ogden_material({0.63, 0.0012, -0.01}, {1.3, 5.0, -2.0}).law)},
+          {"arruda-boyce", ArrudaBoyce{50.0}},
+          {"gent-gent", GentGent{125.0, 0.2}}};
 }
 
 // Strain energy per unit reference volume [MPa = mJ/mm^3] at stretches (l1, l2).
 inline double energy_density_mpa(const InflationProblem& p, double l1, double l2) {
-  const double i1 = first_invariant(l1, l2), i2 = second_invariant(l1, l2);
-  return std::visit([&](const auto& law) { return law.derivatives(i1, i2).w; }, p.material.law) *
-         p.material.shear_modulus_mpa;
+  return strain_energy_density(p.material.law, l1, l2) * p.material.shear_modulus_mpa;
 }
 
 inline bool all_finite(const std::vector<double>& v) {

@@ -66,18 +66,24 @@ struct PressureOnlyReference {
     const double one_minus_cos = t > 0.0 ? g * g / (s_total * (s_total + t)) : 1.0 - cos_phi;
     const double dl2 = (x[1] * cos_phi - x[2] - one_minus_cos) / r_ref;
     const double dl1 = (cos_phi * st.s2 - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
-    const double i2 = second_invariant(l1, l2);
     dx[0] = st.s2 - pressure * r * l1 * sin_phi;
     dx[1] = dl1;
     dx[2] = dl2;
     dx[3] = l1 * sin_phi;
     dx[4] = std::numbers::pi * r * r * l1 * sin_phi;
-    dx[5] = law.derivatives(st.i1, i2).w * r_ref;
+    dx[5] = strain_energy_density(law, l1, l2, st.i1) * r_ref;
   }
 };
 
 const MaterialLaw kLaws[] = {
-    Gent{125.0}, Gent{10.0}, NeoHookean{}, MooneyRivlin{0.2}, Yeoh{0.05, 0.001}};
+    Gent{125.0},
+    Gent{10.0},
+    NeoHookean{},
+    MooneyRivlin{0.2},
+    Yeoh{0.05, 0.001},
+    std::get<Ogden>(ogden_material({0.63, 0.0012, -0.01}, {1.3, 5.0, -2.0}).law),
+    ArrudaBoyce{50.0},
+    GentGent{125.0, 0.2}};
 
 std::string name_of(const MaterialLaw& law) {
   return std::visit([](const auto& l) { return std::string(l.name()); }, law);

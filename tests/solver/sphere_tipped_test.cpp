@@ -83,7 +83,7 @@ std::optional<EnergyAndDepth> energy_at(const GentShooting& shooting, double f) 
     auto side_density = [&](double r) {
       const double l2 = a / r;
       const double l1 = *invert_radial_stress(law, f / r, l2);
-      return law.derivatives(first_invariant(l1, l2), second_invariant(l1, l2)).w * r;
+      return strain_energy_density(law, l1, l2, first_invariant(l1, l2)) * r;
     };
     energy += boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
         side_density, onset->end.r, st->r0, 15, 1e-14);

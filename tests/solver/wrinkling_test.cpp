@@ -22,7 +22,10 @@ std::vector<MaterialLaw> laws() {
           NeoHookean{},
           MooneyRivlin{0.1},
           MooneyRivlin{0.5},
-          Yeoh{0.05, 0.001}};
+          Yeoh{0.05, 0.001},
+          std::get<Ogden>(ogden_material({0.63, 0.0012, -0.01}, {1.3, 5.0, -2.0}).law),
+          ArrudaBoyce{50.0},
+          GentGent{125.0, 0.2}};
 }
 
 // hoop_compressive(l1, l2) is the sign of s2 for every law: s2 = 2 (l2 - 1 / (l1^2 l2^3)) (W1 +

@@ -77,7 +77,7 @@ struct SphereCapSystem {
                   : std::cos(theta) * st.s2 +
                         mu * std::sin(theta) * (st.s1 * l1 / l2 + st.s2 + pressure * a * l1);
     dx[1] = (tangential - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
-    dx[2] = law.derivatives(st.i1, second_invariant(l1, l2)).w * r_ref;
+    dx[2] = strain_energy_density(law, l1, l2, st.i1) * r_ref;
   }
 };
 
@@ -98,7 +98,7 @@ SphereCapState sphere_cap_pole_state(const Law& law, double a, double l, double 
   const auto st = membrane_stress(law, l, l);
   const double alpha = st.ds1_dl1, beta = st.ds1_dl2, s = st.s1;
   const double c = ((3.0 * beta - alpha) * l * l * l - 3.0 * s * l * l) / (16.0 * alpha * a * a);
-  const double w = law.derivatives(st.i1, second_invariant(l, l)).w;
+  const double w = strain_energy_density(law, l, l, st.i1);
   if (mu != 0.0) {
     const double b = pressure == 0.0
                          ? 4.0 * mu * s * l / (3.0 * alpha * a)
