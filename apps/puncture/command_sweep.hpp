@@ -1,0 +1,28 @@
+#pragma once
+// `puncture sweep SPEC.toml -o results.csv`: many problems, one CSV row each
+// (sweep/spec_file.hpp describes the spec; sweep/rows_csv.hpp the columns).
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "output_options.hpp"
+
+namespace puncture::cli {
+
+struct SweepFlags {
+  CLI::App* command = nullptr;
+  std::string spec_path;
+  int threads = 0;  // 0: every core
+  bool resume = false;
+  bool quiet = false;
+
+  bool parsed() const { return command && command->parsed(); }
+};
+
+// Registers `sweep` on `app`.
+void add_sweep_command(CLI::App& app, SweepFlags& flags);
+
+// Runs the parsed sweep (the rows go to --output; `app` is asked which other flags were given:
+// the problem's belong in the spec).  Returns the exit code.
+int run_sweep(const CLI::App& app, const SweepFlags& flags, const OutputFlags& output);
+
+}  // namespace puncture::cli
