@@ -4,13 +4,18 @@
   sweep_runs.py threads PUNCTURE SPEC WORKDIR   serial, --threads 2 and --threads 3: identical
   sweep_runs.py resume PUNCTURE SPEC WORKDIR    killed mid-run (SIGKILL, a row cut short; and
                                                 SIGINT) then --resume: identical to one run
+  sweep_runs.py matches PUNCTURE SPEC WORKDIR   every row equal to `puncture puncture` and
+                                                `puncture state --depth D` with its flags
 Exit 0 when the files are identical, 1 (with the difference) otherwise.
 """
+import csv
+import json
 import os
 import signal
 import subprocess
 import sys
 import time
+import tomllib
 
 
 def run(exe, spec, out, *extra):
@@ -64,6 +69,46 @@ def interrupted(exe, spec, out, sig, after_rows):
     return rows_in(out + ".part")
 
 
+def solve(exe, command, flags):
+    r = subprocess.run([exe, *command, *flags, "--format", "json"], capture_output=True,
+                       text=True, timeout=600)
+    return r.returncode, json.loads(r.stdout)
+
+
+def matches(exe, spec_path, csv_path):
+    """Each row's numbers are those of the single-problem commands with the same flags, exactly
+    (both print the shortest exact decimal of each double); a failed row fails there too, with
+    the same status."""
+    with open(spec_path, "rb") as f:
+        spec = tomllib.load(f)
+    fixed = [f"--{k}={v}" for k, v in spec.get("problem", {}).items()]
+    names = list(spec["parameters"])
+    depths = spec.get("force-at-depth", [])
+    with open(csv_path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    for row in rows:
+        flags = fixed + [f"--{n}={row[n]}" for n in names]
+        rc, doc = solve(exe, ["puncture"], flags)
+        if row["status"] == "converged" or row["puncture_force_n"]:
+            if rc != 0:
+                sys.exit(f"row {row['point']}: the sweep found a puncture, `puncture` did not")
+            for column, key in (("puncture_force_n", "force_n"), ("puncture_depth_mm", "depth_mm"),
+                                ("max_i1", "max_i1"), ("crack_location", "crack_location")):
+                want = doc["puncture"][key]
+                got = row[column] if key == "crack_location" else float(row[column])
+                if got != want:
+                    sys.exit(f"row {row['point']} {column}: sweep {got}, puncture {want}")
+        elif rc != 2 or doc["error"]["status"] != row["status"]:
+            sys.exit(f"row {row['point']}: the sweep's status {row['status']}, `puncture` "
+                     f"exit {rc} {doc.get('error', {}).get('status')}")
+        for depth in depths:
+            rc, doc = solve(exe, ["state", f"--depth={depth}"], flags)
+            cell = row[f"force_n_at_{depth:g}_mm"]
+            if (rc == 0) != (cell != "") or (rc == 0 and float(cell) != doc["state"]["force_n"]):
+                sys.exit(f"row {row['point']} force at {depth} mm: sweep '{cell}', state {doc}")
+    print(f"{len(rows)} rows equal to the single-problem commands")
+
+
 def main():
     mode, exe, spec, workdir = sys.argv[1:5]
     os.makedirs(workdir, exist_ok=True)
@@ -87,6 +132,9 @@ def main():
         resumed = run(exe, spec, out("stopped.csv"), "--resume")
         same("uninterrupted", whole, "interrupted and resumed", resumed)
         print(f"identical after a kill at {rows} rows and an interrupt at {rows2} rows")
+    elif mode == "matches":
+        run(exe, spec, out("matches.csv"), "--threads", "2")
+        matches(exe, spec, out("matches.csv"))
     else:
         sys.exit(f"unknown mode {mode}")
 
