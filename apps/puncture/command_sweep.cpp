@@ -14,6 +14,7 @@
 #include "sweep/resumable_csv.hpp"
 #include "sweep/rows_csv.hpp"
 #include "sweep/spec_file.hpp"
+#include "sweep/statistics_report.hpp"
 
 namespace puncture::cli {
 
@@ -117,6 +118,13 @@ void add_sweep_command(CLI::App& app, SweepFlags& f) {
   f.command->add_flag(
       "--resume", f.resume, "Continue the unfinished sweep in FILE.part: only the missing points");
   f.command->add_flag("--quiet", f.quiet, "No progress or summary on stderr");
+  f.command->add_flag("--statistics",
+                      f.statistics,
+                      "When every point is written: for each output (puncture force [N] and\n"
+                      "depth [mm], forces at depths [N]), its mean, sd, percentiles (5, 25,\n"
+                      "50, 75, 95 %), histogram and the swept flags ranked by standardised\n"
+                      "regression coefficient (SRC^2: share of the variance when R^2 ~ 1),\n"
+                      "on stdout; failed points are counted, not used");
   f.command->footer(
       "SPEC.toml:\n"
       "  design = \"latin-hypercube\"   # grid, latin-hypercube, sobol or monte-carlo\n"
@@ -183,6 +191,7 @@ int run_sweep(const CLI::App& app, const SweepFlags& f, const OutputFlags& outpu
   if (!f.quiet) fmt::print(stderr, "{}{}\n", terminal ? "\r\033[K" : "", summary.brief_report());
   if (summary.ok()) {
     csv.finish();
+    if (f.statistics) fmt::print("{}", sweep_statistics_report(output.path, file.spec));
     return kExitOk;
   }
   fmt::print(stderr,

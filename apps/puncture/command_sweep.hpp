@@ -14,6 +14,7 @@ struct SweepFlags {
   int threads = 0;  // 0: every core
   bool resume = false;
   bool quiet = false;
+  bool statistics = false;
 
   bool parsed() const { return command && command->parsed(); }
 };
