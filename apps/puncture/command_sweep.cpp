@@ -3,89 +3,21 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <csignal>
-#include <fstream>
-#include <sstream>
 
 #include "cli_error.hpp"
 #include "puncture/sweep.hpp"
+#include "sweep/mpi_sweep.hpp"
 #include "sweep/problem_of_flags.hpp"
 #include "sweep/resumable_csv.hpp"
 #include "sweep/rows_csv.hpp"
+#include "sweep/run_support.hpp"
 #include "sweep/spec_file.hpp"
 #include "sweep/statistics_report.hpp"
 
 namespace puncture::cli {
 
-namespace {
-
-std::atomic<bool> interrupted{false};
-
-extern "C" void on_interrupt(int) { interrupted.store(true); }
-
-// SIGINT and SIGTERM stop the sweep after the points being solved: their rows are written, the
-// file stays resumable.  The previous handlers come back when the sweep ends.
-class StopOnSignals {
- public:
-  StopOnSignals() {
-    interrupted.store(false);
-    previous_int_ = std::signal(SIGINT, on_interrupt);
-    previous_term_ = std::signal(SIGTERM, on_interrupt);
-  }
-  ~StopOnSignals() {
-    std::signal(SIGINT, previous_int_);
-    std::signal(SIGTERM, previous_term_);
-  }
-  StopOnSignals(const StopOnSignals&) = delete;
-  StopOnSignals& operator=(const StopOnSignals&) = delete;
-
- private:
-  void (*previous_int_)(int);
-  void (*previous_term_)(int);
-};
-
-std::string duration(double s) {
-  if (!(s < 1e9)) return "?";
-  const long t = static_cast<long>(s + 0.5);
-  if (t >= 3600) return fmt::format("{}h{:02}m", t / 3600, t / 60 % 60);
-  if (t >= 60) return fmt::format("{}m{:02}s", t / 60, t % 60);
-  return fmt::format("{}s", t);
-}
-
-// Rate, failures and ETA on stderr: a line rewritten in place on a terminal, else one line per
-// report (every 10 s) for logs.
-std::function<void(const SweepProgress&)> progress_line(bool terminal, std::size_t resumed,
-                                                        std::size_t total) {
-  return [terminal, resumed, total](const SweepProgress& p) {
-    const double rate = p.elapsed_s > 0.0 ? static_cast<double>(p.done) / p.elapsed_s : 0.0;
-    const double eta = rate > 0.0 ? static_cast<double>(p.to_do - p.done) / rate : 1e300;
-    fmt::print(stderr,
-               "{}sweep: {}/{} points ({:.0f}%), {:.3g} points/s, {} failed, ETA {}{}",
-               terminal ? "\r\033[K" : "",
-               resumed + p.done,
-               total,
-               total > 0
-                   ? 100.0 * static_cast<double>(resumed + p.done) / static_cast<double>(total)
-                   : 100.0,
-               rate,
-               p.failed,
-               duration(eta),
-               terminal ? "" : "\n");
-    std::fflush(stderr);
-  };
-}
-
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// The problem's flags belong in the spec: refused on the command line (and in --config), as
-// are the flags of the other commands.
-void refuse_other_flags(const CLI::App& app) {
+void check_sweep_flags(const CLI::App& app, const OutputFlags& output) {
   for (const CLI::Option* o : app.get_options()) {
     if (o->count() == 0) continue;
     const std::string name = o->get_name();
@@ -96,9 +28,9 @@ void refuse_other_flags(const CLI::App& app) {
         "or [parameters] (swept) table, the rows to --output FILE as CSV",
         name));
   }
+  if (output.path.empty())
+    throw InputError("--output: 'sweep' writes its rows to a file (resumable): give -o FILE");
 }
-
-}  // namespace
 
 void add_sweep_command(CLI::App& app, SweepFlags& f) {
   f.command = app.add_subcommand(
@@ -152,9 +84,8 @@ void add_sweep_command(CLI::App& app, SweepFlags& f) {
 }
 
 int run_sweep(const CLI::App& app, const SweepFlags& f, const OutputFlags& output) {
-  refuse_other_flags(app);
-  if (output.path.empty())
-    throw InputError("--output: 'sweep' writes its rows to a file (resumable): give -o FILE");
+  if (launched_by_mpi()) return run_sweep_mpi(app, f, output);
+  check_sweep_flags(app, output);
   const SweepFile file = read_sweep_file(f.spec_path);
   const std::string header = sweep_csv_header(file.spec);
   const std::string spec_text = file_text(f.spec_path);
@@ -174,7 +105,7 @@ int run_sweep(const CLI::App& app, const SweepFlags& f, const OutputFlags& outpu
     options.progress = progress_line(terminal, csv.rows(), total);
     options.progress_every_s = terminal ? 0.5 : 10.0;
   }
-  options.stop = &interrupted;
+  options.stop = &interrupt_flag();
   SweepSummary summary;
   {
     const StopOnSignals signals;
@@ -199,9 +130,8 @@ int run_sweep(const CLI::App& app, const SweepFlags& f, const OutputFlags& outpu
              csv.rows(),
              total,
              csv.part_path());
-  std::signal(SIGINT, SIG_DFL);
-  std::raise(SIGINT);
-  return kExitSolverFailure;  // not reached: SIGINT ends the program
+  end_by_interrupt();
+  return kExitSolverFailure;  // not reached
 }
 
 }  // namespace puncture::cli

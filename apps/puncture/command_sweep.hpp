@@ -22,6 +22,10 @@ struct SweepFlags {
 // Registers `sweep` on `app`.
 void add_sweep_command(CLI::App& app, SweepFlags& flags);
 
+// The flags `sweep` takes besides its own: --output (required) and --format csv.  The problem's
+// flags belong in the spec: refused on the command line (and in --config).  Throws InputError.
+void check_sweep_flags(const CLI::App& app, const OutputFlags& output);
+
 // Runs the parsed sweep (the rows go to --output; `app` is asked which other flags were given:
 // the problem's belong in the spec).  Returns the exit code.
 int run_sweep(const CLI::App& app, const SweepFlags& flags, const OutputFlags& output);

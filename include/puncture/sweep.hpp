@@ -144,6 +144,10 @@ struct SweepProgress {
 struct SweepOptions {
   int threads = 0;              // 0: every core (OpenMP's default); 1: serial
   std::size_t first_point = 0;  // points before it are done already (resume); none solved
+  // This process solves the points first_point + offset + k stride (k = 0, 1, ...): one share
+  // of a sweep spread over processes (MPI rank `offset` of `stride`); rows in that order.
+  std::size_t stride = 1;
+  std::size_t offset = 0;
   // Rows solved ahead of the oldest undelivered one, per thread: bounds the memory held
   // whatever the number of points.
   std::size_t window_per_thread = 64;
@@ -159,10 +163,11 @@ struct SweepOptions {
   const std::atomic<bool>* stop = nullptr;
 };
 
-struct SweepSummary : Outcome {  // Converged when every point was delivered, else Incomplete
+struct SweepSummary : Outcome {  // Converged when all own_points were delivered, else Incomplete
   std::size_t total_points = 0;
   std::size_t first_point = 0;
-  std::size_t delivered = 0;  // rows delivered in this run
+  std::size_t own_points = 0;  // this run's points: from first_point on, this process's share
+  std::size_t delivered = 0;   // rows delivered in this run
   std::size_t converged = 0;
   std::size_t failed_physical = 0;
   std::size_t failed_numerical = 0;

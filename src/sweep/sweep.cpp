@@ -102,8 +102,6 @@ class Window {
         options_(options),
         count_(count),
         slots_(std::max<std::size_t>(1, options.window_per_thread) * threads),
-        next_claim_(options.first_point),
-        next_delivery_(options.first_point),
         summary_(summary) {
     solver_ = options.solver;
     solver_.record_fields = false;
@@ -117,7 +115,7 @@ class Window {
         room_.wait(lock,
                    [&] { return finished() || next_claim_ < next_delivery_ + slots_.size(); });
         if (finished()) return;
-        index = next_claim_++;
+        index = point_index(next_claim_++);
       }
       std::optional<SweepRow> row;
       try {
@@ -128,7 +126,7 @@ class Window {
         fail(std::current_exception());
         return;
       }
-      deliver(index, std::move(*row));
+      deliver(std::move(*row));
     }
   }
 
@@ -152,9 +150,9 @@ class Window {
     room_.notify_all();
   }
 
-  void deliver(std::size_t index, SweepRow row) {
+  void deliver(SweepRow row) {
     const std::lock_guard lock(mutex_);
-    slots_[index % slots_.size()] = std::move(row);
+    slots_[local_of(row.point.index) % slots_.size()] = std::move(row);
     try {
       for (auto* slot = &slots_[next_delivery_ % slots_.size()]; slot->has_value();
            slot = &slots_[next_delivery_ % slots_.size()]) {
@@ -195,7 +193,7 @@ class Window {
     if (!options_.progress) return;
     SweepProgress p;
     p.done = summary_.delivered;
-    p.to_do = count_ - options_.first_point;
+    p.to_do = count_;
     p.failed = summary_.delivered - summary_.converged;
     p.elapsed_s = seconds_since(start_);
     options_.progress(p);
@@ -205,10 +203,17 @@ class Window {
   const ProblemOfPoint& problem_of_;
   const SweepOptions& options_;
   SolverOptions solver_;
+  // This process's points, k = 0 .. count_ - 1: first_point + offset + k stride.
+  std::size_t point_index(std::size_t k) const {
+    return options_.first_point + options_.offset + k * options_.stride;
+  }
+  std::size_t local_of(std::size_t index) const {
+    return (index - options_.first_point - options_.offset) / options_.stride;
+  }
   const std::size_t count_;
-  std::vector<std::optional<SweepRow>> slots_;  // row i in slot i % size, until delivered
-  std::size_t next_claim_;
-  std::size_t next_delivery_;
+  std::vector<std::optional<SweepRow>> slots_;  // point k in slot k % size, until delivered
+  std::size_t next_claim_ = 0;                  // k of the next point to solve
+  std::size_t next_delivery_ = 0;               // k of the next row to deliver
   SweepSummary& summary_;
   std::exception_ptr error_;
   std::mutex mutex_;
@@ -228,6 +233,11 @@ SweepSummary sweep(const SweepSpec& spec, const ProblemOfPoint& problem_of,
     throw InvalidInput(
         "threads", fmt::format("threads: must be >= 0 (0: every core), got {}", options.threads));
   const std::size_t count = point_count(spec);
+  if (options.stride < 1 || options.offset >= options.stride)
+    throw InvalidInput("stride",
+                       fmt::format("stride: needs stride >= 1 and offset < stride, got {} and {}",
+                                   options.stride,
+                                   options.offset));
   if (options.first_point > count)
     throw InvalidInput(
         "first_point",
@@ -241,18 +251,22 @@ SweepSummary sweep(const SweepSpec& spec, const ProblemOfPoint& problem_of,
   check_every_point(spec, problem_of, options.first_point, count, summary.threads);
   summary.validation_s = seconds_since(validation_start);
 
-  Window window(spec, problem_of, options, count, summary.threads, summary);
+  const std::size_t start = options.first_point + options.offset;
+  const std::size_t own = start < count ? (count - start + options.stride - 1) / options.stride : 0;
+  Window window(spec, problem_of, options, own, summary.threads, summary);
   on_threads(summary.threads, [&] { window.work(); });
   window.rethrow_failure();
   window.report_progress();  // the last word: every row delivered
   summary.solve_s = seconds_since(window.start());
 
-  const bool complete = summary.first_point + summary.delivered == count;
+  summary.own_points = own;
+  const bool complete = summary.delivered == own;
   summary.status = complete ? Status::Converged : Status::Incomplete;
   if (!complete)
-    summary.message = fmt::format("stopped after point {} of {}: the rest were not solved",
-                                  summary.first_point + summary.delivered,
-                                  count);
+    summary.message =
+        fmt::format("stopped after {} of this run's {} points: the rest were not solved",
+                    summary.delivered,
+                    own);
   return summary;
 }
 

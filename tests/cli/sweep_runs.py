@@ -6,6 +6,10 @@
                                                 SIGINT) then --resume: identical to one run
   sweep_runs.py matches PUNCTURE SPEC WORKDIR   every row equal to `puncture puncture` and
                                                 `puncture state --depth D` with its flags
+  sweep_runs.py mpi PUNCTURE SPEC WORKDIR MPIRUN
+                                                mpirun -n 2 and -n 3 (2 threads each), and a
+                                                killed serial run resumed by mpirun -n 2:
+                                                identical to the serial run
 Exit 0 when the files are identical, 1 (with the difference) otherwise.
 """
 import csv
@@ -18,12 +22,18 @@ import time
 import tomllib
 
 
-def run(exe, spec, out, *extra):
+# mpirun refuses root unless told (containers, CI); --oversubscribe: more ranks than cores.
+MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+def run(exe, spec, out, *extra, launcher=()):
     for stale in (out, out + ".part", out + ".part.spec"):
         if os.path.exists(stale) and "--resume" not in extra:
             os.remove(stale)
-    r = subprocess.run([exe, "sweep", spec, "-o", out, "--quiet", *extra],
-                       capture_output=True, text=True, timeout=600)
+    r = subprocess.run([*launcher, exe, "sweep", spec, "-o", out, "--quiet", *extra],
+                       capture_output=True, text=True, timeout=600,
+                       env=MPI_ENV if launcher else None)
     if r.returncode != 0:
         sys.exit(f"puncture sweep {' '.join(extra)} failed ({r.returncode}):\n{r.stderr}")
     return open(out, "rb").read()
@@ -132,6 +142,20 @@ def main():
         resumed = run(exe, spec, out("stopped.csv"), "--resume")
         same("uninterrupted", whole, "interrupted and resumed", resumed)
         print(f"identical after a kill at {rows} rows and an interrupt at {rows2} rows")
+    elif mode == "mpi":
+        mpirun = sys.argv[5]
+        serial = run(exe, spec, out("serial.csv"), "--threads", "1")
+        for n, threads in (("2", "1"), ("3", "2")):
+            same("serial", serial, f"mpirun -n {n}",
+                 run(exe, spec, out(f"mpi{n}.csv"), "--threads", threads,
+                     launcher=(mpirun, "-n", n)))
+        rows = interrupted(exe, spec, out("killed.csv"), signal.SIGKILL, 5)
+        with open(out("killed.csv.part"), "ab") as f:
+            f.write(b"9,0.")
+        resumed = run(exe, spec, out("killed.csv"), "--resume", launcher=(mpirun, "-n", "2"))
+        same("serial", serial, "killed, resumed by mpirun -n 2", resumed)
+        print(f"identical: serial, mpirun -n 2 and -n 3, and a kill at {rows} rows resumed "
+              f"by mpirun -n 2")
     elif mode == "matches":
         run(exe, spec, out("matches.csv"), "--threads", "2")
         matches(exe, spec, out("matches.csv"))

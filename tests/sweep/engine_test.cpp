@@ -180,6 +180,31 @@ TEST(SweepEngine, ResumeDeliversExactlyTheMissingRows) {
   EXPECT_THROW(run(spec, problem_at, {.first_point = 7}), std::invalid_argument);
 }
 
+// Shares of a sweep (processes): offset r of stride 3 delivers points first + r, first + r + 3,
+// ... in order, each row identical to the whole sweep's.
+TEST(SweepEngine, SharesOfAStrideTogetherAreTheWholeSweep) {
+  SweepSpec spec = small_spec();
+  spec.samples = 8;
+  const auto whole = run(spec, problem_at, {.threads = 1});
+  std::size_t rows = 0;
+  for (std::size_t offset = 0; offset < 3; ++offset) {
+    SweepSummary summary;
+    const auto share = run(spec,
+                           problem_at,
+                           {.threads = 2, .first_point = 1, .stride = 3, .offset = offset},
+                           &summary);
+    EXPECT_TRUE(summary.ok());
+    EXPECT_EQ(summary.own_points, share.size());
+    for (std::size_t k = 0; k < share.size(); ++k) {
+      ASSERT_EQ(share[k].point.index, 1 + offset + 3 * k);
+      expect_same(share[k], whole[share[k].point.index]);
+    }
+    rows += share.size();
+  }
+  EXPECT_EQ(rows, 7u);  // points 1 .. 7
+  EXPECT_THROW(run(spec, problem_at, {.stride = 2, .offset = 2}), std::invalid_argument);
+}
+
 TEST(SweepEngine, StopDeliversAPrefixAndReportsIncomplete) {
   const SweepSpec spec = small_spec();
   std::atomic<bool> stop{false};
