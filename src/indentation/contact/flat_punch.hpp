@@ -615,7 +615,7 @@ class FlatPunchContact {
   // from the first of 1 + 2^-k (k = 1, 2, ...) with a negative clamp residual
   // (contact_model.hpp: bracket_from_below).
   template <class Residual>
-  ShootingPlan face_plan(double f, Residual& counted) const {
+  ShootingPlan face_plan([[maybe_unused]] double f, Residual& counted) const {
     return bracket_from_below(counted,
                               Configuration::SlipWithoutPartTwo,
                               "flat-punch shooting on the face under pressure");
