@@ -7,6 +7,7 @@
 
 #include "cli_error.hpp"
 #include "puncture/sweep.hpp"
+#include "sweep/design_map.hpp"
 #include "sweep/mpi_sweep.hpp"
 #include "sweep/problem_of_flags.hpp"
 #include "sweep/resumable_csv.hpp"
@@ -21,7 +22,7 @@ void check_sweep_flags(const CLI::App& app, const OutputFlags& output) {
   for (const CLI::Option* o : app.get_options()) {
     if (o->count() == 0) continue;
     const std::string name = o->get_name();
-    if (name == "--output") continue;
+    if (name == "--output" || name == "--plot") continue;
     if (name == "--format" && o->as<std::string>() == "csv") continue;
     throw InputError(fmt::format(
         "{}: does not apply to 'sweep'; the problem's flags go in the spec's [problem] (fixed) "
@@ -80,13 +81,18 @@ void add_sweep_command(CLI::App& app, SweepFlags& f) {
       "The rows go to FILE.part as they are solved; FILE.part becomes FILE when every point\n"
       "is written.  Ctrl-C stops after the points in hand; --resume continues.\n"
       "Exit codes: 0 every point written (failed points included), 1 invalid spec or flags,\n"
-      "2 the file could not be written; interrupted: the signal's.");
+      "2 the file could not be written, 3 the --plot could not be drawn; interrupted: the\n"
+      "signal's.\n"
+      "--plot FILE (.png, .svg, .pdf): the design map of the finished sweep, the puncture\n"
+      "force (else the first force at a depth) over the first two numeric swept flags, failed\n"
+      "points marked.");
 }
 
 int run_sweep(const CLI::App& app, const SweepFlags& f, const OutputFlags& output) {
   if (launched_by_mpi()) return run_sweep_mpi(app, f, output);
   check_sweep_flags(app, output);
   const SweepFile file = read_sweep_file(f.spec_path);
+  const auto plot = design_map_target(app);
   const std::string header = sweep_csv_header(file.spec);
   const std::string spec_text = file_text(f.spec_path);
   ResumableCsv csv = f.resume ? ResumableCsv::resume(output.path, header, spec_text)
@@ -123,6 +129,7 @@ int run_sweep(const CLI::App& app, const SweepFlags& f, const OutputFlags& outpu
   if (summary.ok()) {
     csv.finish();
     if (f.statistics) fmt::print("{}", sweep_statistics_report(output.path, file.spec));
+    if (plot) draw_design_map(output.path, file.spec, *plot);
     return kExitOk;
   }
   fmt::print(stderr,

@@ -3,6 +3,7 @@
     python3 plot_cli.py curve   CURVE.json   OUT.png|svg|pdf   (puncture curve --format json)
     python3 plot_cli.py state   STATE.json   OUT.png|svg|pdf   (puncture state --format json)
     python3 plot_cli.py figures FIGURES.json OUT_DIR           (puncture figures)
+    python3 plot_cli.py sweep   MAP.json     OUT.png|svg|pdf   (puncture sweep --plot)
 
 Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2 bad usage,
 3 numpy or matplotlib missing, 1 any other failure; the reason goes to stderr.
@@ -11,24 +12,25 @@ Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2
 import json
 import sys
 
-KINDS = ("curve", "state", "figures")
+KINDS = ("curve", "state", "figures", "sweep")
 EXIT_USAGE = 2
 EXIT_MISSING_MODULE = 3
 
 
 def _modules():
     if __package__:
-        from . import paper_figures, plots
+        from . import paper_figures, plots, sweep_plots
     else:  # run as a script: its directory is on sys.path
         import paper_figures
         import plots
-    return plots, paper_figures
+        import sweep_plots
+    return plots, paper_figures, sweep_plots
 
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 3 or argv[0] not in KINDS:
-        print("usage: plot_cli.py curve|state|figures DATA.json OUTPUT", file=sys.stderr)
+        print("usage: plot_cli.py curve|state|figures|sweep DATA.json OUTPUT", file=sys.stderr)
         return EXIT_USAGE
     kind, data_path, target = argv
     try:
@@ -43,13 +45,15 @@ def main(argv=None):
         )
         return EXIT_MISSING_MODULE
     try:
-        plots, paper_figures = _modules()
+        plots, paper_figures, sweep_plots = _modules()
         with open(data_path, encoding="utf-8") as f:
             data = json.load(f)
         if kind == "curve":
             plots.loading_curve(data, target)
         elif kind == "state":
             plots.state_overview(data, target)
+        elif kind == "sweep":
+            sweep_plots.design_map(data, target)
         else:
             for path in paper_figures.draw_all(data, target):
                 print(path)

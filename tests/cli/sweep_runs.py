@@ -6,6 +6,8 @@
                                                 SIGINT) then --resume: identical to one run
   sweep_runs.py matches PUNCTURE SPEC WORKDIR   every row equal to `puncture puncture` and
                                                 `puncture state --depth D` with its flags
+  sweep_runs.py plot PUNCTURE SPEC WORKDIR      --plot map.svg: the map is drawn, its failed
+                                                points marked
   sweep_runs.py mpi PUNCTURE SPEC WORKDIR MPIRUN
                                                 mpirun -n 2 and -n 3 (2 threads each), and a
                                                 killed serial run resumed by mpirun -n 2:
@@ -156,6 +158,16 @@ def main():
         same("serial", serial, "killed, resumed by mpirun -n 2", resumed)
         print(f"identical: serial, mpirun -n 2 and -n 3, and a kill at {rows} rows resumed "
               f"by mpirun -n 2")
+    elif mode == "plot":
+        svg = out("map.svg")
+        if os.path.exists(svg):
+            os.remove(svg)
+        run(exe, spec, out("map.csv"), "--plot", svg)
+        text = open(svg, encoding="utf-8").read()
+        for word in ("puncture force", "failed"):
+            if word not in text:
+                sys.exit(f"{svg} has no '{word}'")
+        print(f"{svg} drawn, failed points marked")
     elif mode == "matches":
         run(exe, spec, out("matches.csv"), "--threads", "2")
         matches(exe, spec, out("matches.csv"))

@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "design_map.hpp"
+#include "plot.hpp"
 #include "problem_of_flags.hpp"
 #include "resumable_csv.hpp"
 #include "rows_csv.hpp"
@@ -75,8 +77,11 @@ class MpiSession {
   int provided_ = 0, rank_ = 0, size_ = 1;
 };
 
-// Rank 0 refused the output file (it says why); the other ranks end with it.
-struct RefusedByRankZero {};
+// Rank 0 refused the output file or the --plot target (`error` on rank 0: why); every rank
+// ends with it.
+struct RefusedByRankZero {
+  std::exception_ptr error;
+};
 
 EndCounts counts_of(const SweepSummary& s) {
   return {s.delivered, s.converged, s.failed_physical, s.failed_numerical, s.failed_outside_model};
@@ -252,10 +257,12 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
   file = read_sweep_file(f.spec_path);
   const std::size_t total = point_count(file.spec);
   std::optional<ResumableCsv> csv;
+  std::optional<std::string> plot;
   std::uint64_t first = kRefused;
   std::exception_ptr refused;
   if (root) {
     try {
+      plot = design_map_target(app);  // rank 0 alone draws it
       const std::string header = sweep_csv_header(file.spec);
       const std::string spec_text = file_text(f.spec_path);
       csv.emplace(f.resume ? ResumableCsv::resume(output.path, header, spec_text)
@@ -271,7 +278,7 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
     }
   }
   MPI_Bcast(&first, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
-  if (refused) std::rethrow_exception(refused);
+  if (refused) throw RefusedByRankZero{refused};
   if (first == kRefused) throw RefusedByRankZero{};
   if (!root) return run_share(mpi, file, f, first);
 
@@ -332,6 +339,7 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
   if (complete) {
     csv->finish();
     if (f.statistics) fmt::print("{}", sweep_statistics_report(output.path, file.spec));
+    if (plot) draw_design_map(output.path, file.spec, *plot);
     return kExitOk;
   }
   fmt::print(stderr,
@@ -360,8 +368,20 @@ int run_sweep_mpi(const CLI::App& app, const SweepFlags& f, const OutputFlags& o
     return together(e.what());
   } catch (const InvalidInput& e) {
     return together(e.what());
-  } catch (const RefusedByRankZero&) {
-    return together(nullptr);
+  } catch (const RefusedByRankZero& refused) {
+    if (!refused.error) return together(nullptr);
+    try {
+      std::rethrow_exception(refused.error);
+    } catch (const PlotError& e) {
+      fmt::print(stderr, "puncture: plot failed: {}\n", e.what());
+      MPI_Barrier(MPI_COMM_WORLD);
+      return kExitPlotFailure;
+    } catch (const std::exception& e) {
+      return together(e.what());
+    }
+  } catch (const PlotError& e) {  // the map of a finished sweep: every rank is done
+    fmt::print(stderr, "puncture: plot failed: {}\n", e.what());
+    return kExitPlotFailure;
   } catch (const std::exception& e) {  // e.g. FILE cannot be written: the job cannot go on
     fmt::print(stderr, "puncture: sweep failed on MPI rank {}: {}\n", mpi.rank(), e.what());
     MPI_Abort(MPI_COMM_WORLD, kExitSolverFailure);
