@@ -239,6 +239,9 @@ SweepFile read_sweep_file(const std::string& path) {
       spec.outputs.puncture = value->as_boolean();
     } else if (key == "force-at-depth") {
       spec.outputs.force_at_depth_mm = r.numbers(*value, key);
+      for (const double depth : spec.outputs.force_at_depth_mm)
+        if (depth < 0.0)
+          r.fail(*value, fmt::format("'force-at-depth': depths are >= 0 mm, got {}", depth));
     } else if (key == "problem") {
       if (!value->is_table()) r.fail(*value, "'problem' must be a table ([problem])");
       for (const auto& [flag, v] : in_file_order(*value)) {
