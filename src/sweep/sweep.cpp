@@ -154,7 +154,8 @@ class Window {
     const std::lock_guard lock(mutex_);
     slots_[local_of(row.point.index) % slots_.size()] = std::move(row);
     try {
-      for (auto* slot = &slots_[next_delivery_ % slots_.size()]; slot->has_value();
+      // After an error nothing more is delivered: the rows delivered stay a prefix.
+      for (auto* slot = &slots_[next_delivery_ % slots_.size()]; slot->has_value() && !error_;
            slot = &slots_[next_delivery_ % slots_.size()]) {
         count_row(**slot);
         if (options_.on_row) options_.on_row(**slot);
