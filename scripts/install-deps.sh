@@ -3,14 +3,14 @@
 # bounded least squares of the fits), and for the Python
 # bindings and plots (scipy: an independent check of the inflation solver in the Python tests),
 # and for packaging: help2man (the man page) and dpkg-dev (dpkg-shlibdeps, the Depends of
-# `cpack -G DEB`), toml11 (the sweep specs of `puncture sweep`) and Open MPI (`mpirun -n P
-# puncture sweep`; its test).
+# `cpack -G DEB`), toml11 (the sweep specs of `puncture sweep`), Open MPI (`mpirun -n P
+# puncture sweep`; its test) and Dask (the Python sweep example over a cluster; its test).
 set -euo pipefail
 packages=(build-essential cmake libboost-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
           libfmt-dev libgtest-dev libbenchmark-dev librapidcheck-dev libceres-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-matplotlib
           python3-pytest python3-scipy help2man dpkg-dev libtoml11-dev
-          libopenmpi-dev openmpi-bin)
+          libopenmpi-dev openmpi-bin python3-dask python3-distributed)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -35,13 +35,19 @@ def share(k, n):  # runs on a worker
     return puncture.sweep(SPEC, problem_of, share=(k, n), dataframe=False)
 
 
-def main():
-    client = Client(sys.argv[1]) if len(sys.argv) > 1 else Client()
+def sweep_on(client):
+    """The whole sweep's table, its shares solved on the cluster's workers."""
     n = 4 * max(1, len(client.scheduler_info()["workers"]))
     parts = client.gather(client.map(share, range(n), [n] * n))
     table = {key: np.concatenate([np.asarray(p[key]) for p in parts]) for key in parts[0]}
     order = np.argsort(table["point"])  # back in point order
-    table = {key: column[order] for key, column in table.items()}
+    return {key: column[order] for key, column in table.items()}
+
+
+def main():
+    client = Client(sys.argv[1]) if len(sys.argv) > 1 else Client()
+    table = sweep_on(client)
+    order = table["point"]
     force = table["puncture_force_n"][table["status"] == "converged"]
     print(f"{len(force)} of {len(order)} points punctured; force percentiles 5/50/95 %: "
           f"{np.percentile(force, [5, 50, 95])} N")

@@ -85,3 +85,22 @@ def test_shares_together_are_the_whole_sweep():
     assert list(points[order]) == list(range(8))
     force = np.concatenate([p["puncture_force_n"] for p in parts])[order]
     assert np.array_equal(force, whole["puncture_force_n"])
+
+
+def test_dask_example_gives_the_single_machine_table():
+    """python/examples/dask_sweep.py on a local Dask cluster (skipped without python3-dask and
+    python3-distributed): the same table as one puncture.sweep."""
+    distributed = pytest.importorskip("distributed")
+    import importlib.util
+    import os
+
+    path = os.path.join(os.path.dirname(__file__), "..", "examples", "dask_sweep.py")
+    spec = importlib.util.spec_from_file_location("dask_sweep", path)
+    example = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(example)
+    with distributed.Client(n_workers=2, threads_per_worker=1, processes=False) as client:
+        table = example.sweep_on(client)
+    whole = pu.sweep(example.SPEC, example.problem_of, dataframe=False)
+    assert np.array_equal(table["point"], whole["point"])
+    assert np.array_equal(table["puncture_force_n"], whole["puncture_force_n"])
+    assert list(table["status"]) == list(whole["status"])
