@@ -21,6 +21,7 @@ void bind_solve(py::module_& m);
 void bind_calibration(py::module_& m);   // after bind_solve: raises its SolverError
 void bind_inflation(py::module_& m);     // after bind_solve and bind_problem
 void bind_verification(py::module_& m);  // after bind_problem
+void bind_sweep(py::module_& m);         // after bind_problem
 
 // A read-only numpy array viewing `values`, which `owner` (a Python object) keeps alive.
 template <class T>

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "calibration/band_monte_carlo.hpp"
 #include "calibration_output.hpp"
 #include "cli_error.hpp"
 #include "parameter_flags.hpp"
@@ -212,11 +213,17 @@ constexpr BandFlagNames kBandFlags[4] = {
 std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format format) {
   BandReport report;
   report.problem = make_problem(pf);
+  const bool monte_carlo = f.band_method == "monte-carlo";
   require_finite(f.band_sd_multiple, "--sd-multiple", "> 0", f.band_sd_multiple > 0.0);
-  report.sd_multiple = f.band_sd_multiple;
-  if (f.band_samples < 2 || f.band_samples > 1000)
-    throw InputError(
-        fmt::format("--samples: must be in the range 2 to 1000, got {}", f.band_samples));
+  // Monte Carlo: a normal truncated at +-3 sd unless told otherwise.
+  report.sd_multiple =
+      monte_carlo && f.band_sd_multiple_option->count() == 0 ? 3.0 : f.band_sd_multiple;
+  const int most_samples = monte_carlo ? 100000000 : 1000;
+  if (f.band_samples < 2 || f.band_samples > most_samples)
+    throw InputError(fmt::format("--samples: must be in the range 2 to {} with --method {}, got {}",
+                                 most_samples,
+                                 f.band_method,
+                                 f.band_samples));
   const BandParameters nominal = band_parameters(report.problem);
   bool any = false;
   for (int i = 0; i < 4; ++i) {
@@ -237,7 +244,7 @@ std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format f
       const double sd = f.band_sd[i];
       require_finite(sd, names.sd, ">= 0", sd >= 0.0);
       report.sd[i] = sd;
-      range = plus_minus(x, sd, f.band_sd_multiple);
+      range = plus_minus(x, sd, report.sd_multiple);
     } else {
       const auto& v = f.band_range[i];
       if (v.size() != 2)
@@ -256,6 +263,13 @@ std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format f
     throw InputError(
         "calibrate band: give at least one interval, e.g. --critical-i1-sd 4.8 or "
         "--friction-range 0.1,0.3 (see calibrate band --help)");
+  if (monte_carlo) {
+    MonteCarloBandRequest request{report.problem, report.ranges, {}, 0, f.band_seed};
+    for (int i = 0; i < 4; ++i)
+      if (f.band_sd_option[i]->count() > 0) request.sd[i] = f.band_sd[i];
+    request.samples = static_cast<std::size_t>(f.band_samples);
+    return monte_carlo_band_text(request, format);
+  }
   BandOptions options;
   options.samples_per_range = f.band_samples;
   try {
@@ -477,17 +491,32 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
             ->group("Intervals");
     f.band_sd_option[i]->excludes(f.band_range_option[i]);
   }
-  f.band
-      ->add_option("--sd-multiple",
-                   f.band_sd_multiple,
-                   "Intervals from standard deviations are nominal +- this many sd\n"
-                   "(> 0; default 1)")
-      ->group("Intervals");
+  f.band_sd_multiple_option =
+      f.band
+          ->add_option("--sd-multiple",
+                       f.band_sd_multiple,
+                       "Intervals from standard deviations are nominal +- this many sd\n"
+                       "(> 0; default 1)")
+          ->group("Intervals");
   f.band
       ->add_option("--samples",
                    f.band_samples,
                    "Points along each interval, ends included, where the prediction\n"
-                   "is checked for monotonicity (2 to 1000; default 5)")
+                   "is checked for monotonicity (2 to 1000; default 5); with --method\n"
+                   "monte-carlo: the number of samples (2 to 10^8)")
+      ->group("Intervals");
+  f.band
+      ->add_option("--method",
+                   f.band_method,
+                   "corners: the least and largest prediction over the intervals'\n"
+                   "corners; monte-carlo: --samples random parameter sets on every\n"
+                   "core, each parameter normal(nominal, sd) truncated to nominal +-\n"
+                   "--sd-multiple sd (default 3 here) or uniform on LO,HI; reports the\n"
+                   "force's and depth's percentiles and the parameters' ranking")
+      ->check(CLI::IsMember({"corners", "monte-carlo"}))
+      ->capture_default_str()
+      ->group("Intervals");
+  f.band->add_option("--seed", f.band_seed, "Seed of the Monte Carlo samples (default 1)")
       ->group("Intervals");
 
   f.fit = app.add_subcommand("fit", "Least-squares fits of material tests: uniaxial");

@@ -3,6 +3,7 @@
 // paper's experiments (include/puncture/calibration.hpp); `calibrate band`: the puncture band
 // their uncertainties give (include/puncture/puncture_band.hpp).
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,10 @@ struct CalibrationFlags {
   CLI::Option* band_sd_option[4] = {nullptr, nullptr, nullptr, nullptr};
   CLI::Option* band_range_option[4] = {nullptr, nullptr, nullptr, nullptr};
   double band_sd_multiple = 1.0;
+  CLI::Option* band_sd_multiple_option = nullptr;
   int band_samples = 5;
+  std::string band_method = "corners";  // or monte-carlo (calibration/band_monte_carlo.hpp)
+  std::uint64_t band_seed = 1;
 
   // fit uniaxial
   CLI::App* uniaxial = nullptr;

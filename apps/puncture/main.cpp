@@ -8,6 +8,7 @@
 #include "cli_error.hpp"
 #include "command_calibrate.hpp"
 #include "command_inflate.hpp"
+#include "command_sweep.hpp"
 #include "command_verify.hpp"
 #include "commands.hpp"
 #include "figures.hpp"
@@ -134,6 +135,8 @@ int main(int argc, char** argv) {
     add_inflate_command(app, inflate_flags);
     VerifyFlags verify_flags;
     add_verify_command(app, verify_flags);
+    SweepFlags sweep_flags;
+    add_sweep_command(app, sweep_flags);
 
     try {
       app.parse(argc, argv);
@@ -156,6 +159,7 @@ int main(int argc, char** argv) {
       return kExitBadInput;
     }
 
+    if (sweep_flags.parsed()) return run_sweep(app, sweep_flags, output_flags);
     if (calibration_flags.parsed()) {
       const bool plot = plot_option->count() > 0;
       const char* kind = calibration_plot_kind(calibration_flags);

@@ -231,6 +231,11 @@ __all__ += [
     "verify",
 ]
 
+# Sweeps: many problems on every core (sweeps.py, the engine of `puncture sweep`).
+from .sweeps import sweep  # noqa: E402
+
+__all__ += ["sweep"]
+
 # Shown as puncture.Problem, puncture.SolverError, ... rather than puncture._puncture.*.
 for _name in __all__:
     _obj = globals().get(_name)

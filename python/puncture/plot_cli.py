@@ -6,6 +6,7 @@
     python3 plot_cli.py uniaxial-fit FIT.json OUT.png|svg|pdf  (puncture fit uniaxial --format json)
     python3 plot_cli.py band  BAND.json  OUT.png|svg|pdf       (puncture calibrate band ...)
     python3 plot_cli.py jlim  JLIM.json  OUT.png|svg|pdf       (puncture calibrate jlim ...)
+    python3 plot_cli.py sweep   MAP.json     OUT.png|svg|pdf   (puncture sweep --plot)
 
 Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2 bad usage,
 3 numpy or matplotlib missing, 1 any other failure; the reason goes to stderr.
@@ -14,19 +15,20 @@ Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2
 import json
 import sys
 
-KINDS = ("curve", "state", "figures", "uniaxial-fit", "band", "jlim")
+KINDS = ("curve", "state", "figures", "uniaxial-fit", "band", "jlim", "sweep")
 EXIT_USAGE = 2
 EXIT_MISSING_MODULE = 3
 
 
 def _modules():
     if __package__:
-        from . import calibration_plots, paper_figures, plots
+        from . import calibration_plots, paper_figures, plots, sweep_plots
     else:  # run as a script: its directory is on sys.path
         import calibration_plots
         import paper_figures
         import plots
-    return plots, paper_figures, calibration_plots
+        import sweep_plots
+    return plots, paper_figures, calibration_plots, sweep_plots
 
 
 def main(argv=None):
@@ -47,7 +49,7 @@ def main(argv=None):
         )
         return EXIT_MISSING_MODULE
     try:
-        plots, paper_figures, calibration_plots = _modules()
+        plots, paper_figures, calibration_plots, sweep_plots = _modules()
         with open(data_path, encoding="utf-8") as f:
             data = json.load(f)
         if kind == "curve":
@@ -60,6 +62,8 @@ def main(argv=None):
             calibration_plots.puncture_band(data, target)
         elif kind == "jlim":
             calibration_plots.j_lim_scan(data, target)
+        elif kind == "sweep":
+            sweep_plots.design_map(data, target)
         else:
             for path in paper_figures.draw_all(data, target):
                 print(path)

@@ -21,7 +21,7 @@ if(NOT DEFINED EXPECT_RC OR EXPECT_RC STREQUAL "")
   set(EXPECT_RC 0)
 endif()
 if(OUTPUT_FILE)
-  file(REMOVE "${OUTPUT_FILE}")
+  file(REMOVE "${OUTPUT_FILE}" "${OUTPUT_FILE}.part" "${OUTPUT_FILE}.part.spec")  # sweep's
 endif()
 
 execute_process(COMMAND "${EXE}" ${args}

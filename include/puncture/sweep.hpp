@@ -1,0 +1,189 @@
+#pragma once
+// Sweeps: many problems solved through the same public API, for design maps and Monte Carlo.
+//
+//   SweepSpec    what: the parameters (by name), the design that places the points, the outputs
+//   SweepOptions how: threads, where to resume, the row sink and the progress observer
+//   SweepSummary what happened: points evaluated, failures by kind, rate
+//
+// The point list is deterministic: point i's inputs depend only on the spec and i (per-point
+// seeds), never on the order in which points are solved.  Rows reach the sink in point order,
+// one at a time, whatever the number of threads, so a sweep's output is identical bit for bit
+// with 1 or N threads.  A point whose solve fails is a row with its Status, never dropped.
+//
+// The library does not know the parameters' names: the caller turns each point into a Problem
+// (ProblemOfPoint); the CLI does it through its own flags, so every flag can be swept.
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "puncture/options.hpp"
+#include "puncture/outcome.hpp"
+#include "puncture/problem.hpp"
+
+namespace puncture {
+
+// How the points are placed in the parameters' space.
+enum class SweepDesign {
+  Grid,            // every combination of the parameters' levels (the last varies fastest)
+  LatinHypercube,  // `samples` points, exactly one in each of the `samples` equal-probability
+                   // strata of every parameter
+  Sobol,           // the first `samples` points of the Sobol sequence (Joe-Kuo direction
+                   // numbers, the zero point skipped): quasi-Monte Carlo
+  MonteCarlo,      // `samples` independent random points
+};
+std::string to_token(SweepDesign design);  // "grid", "latin-hypercube", "sobol", "monte-carlo"
+
+enum class DistributionKind {
+  Uniform,          // on [lower, upper]
+  Normal,           // mean, sd
+  LogNormal,        // mean, sd of the value itself (not of its logarithm); mean > 0
+  TruncatedNormal,  // the normal(mean, sd) restricted to [lower, upper]
+};
+std::string to_token(
+    DistributionKind kind);  // "uniform", "normal", "lognormal", "truncated-normal"
+
+// A parameter's distribution, in the parameter's own unit.  LatinHypercube, Sobol and MonteCarlo
+// draw a coordinate u in (0, 1) and map it through the quantile; uniform on the unit cube thus
+// becomes this distribution (a stratum of u is a stratum of probability).
+struct Distribution {
+  DistributionKind kind = DistributionKind::Uniform;
+  double lower = 0.0, upper = 1.0;  // Uniform, TruncatedNormal
+  double mean = 0.0, sd = 0.0;      // Normal, LogNormal, TruncatedNormal
+  double quantile(double u) const;  // u in (0, 1)
+};
+
+// `count` (>= 2) levels evenly spaced from lower to upper, both included, as text (the shortest
+// decimal form of each double, which reads back exactly).
+std::vector<std::string> evenly_spaced_levels(double lower, double upper, int count);
+
+struct SweepParameter {
+  std::string name;  // passed through to ProblemOfPoint (the CLI: the flag's long name)
+  // Grid: the levels in order, as text (numbers, or words such as "sphere-tipped").
+  std::vector<std::string> levels;
+  // LatinHypercube, Sobol, MonteCarlo: the distribution sampled.
+  Distribution distribution;
+};
+
+// What is computed at each point.
+struct SweepOutputs {
+  bool puncture = true;  // predict_puncture: force [N], depth [mm], stretch, where I1 peaks
+  // The force [N] at each of these depths [mm] (solve_at_depth in the stage the problem's stick
+  // rule gives there, as `puncture state --depth D --stage auto`).
+  std::vector<double> force_at_depth_mm;
+};
+
+struct SweepSpec {
+  SweepDesign design = SweepDesign::Grid;
+  std::vector<SweepParameter> parameters;
+  std::size_t samples = 0;  // points of LatinHypercube, Sobol, MonteCarlo (a Grid has its own)
+  std::uint64_t seed = 0;   // LatinHypercube, MonteCarlo: the per-point seeds derive from it
+  SweepOutputs outputs;
+};
+
+// Every problem with the spec, each naming the parameter (parameters[j].name or the field);
+// empty when valid.
+std::vector<ValidationError> validation_errors(const SweepSpec& spec);
+
+// The number of points: the product of the levels (Grid) or `samples`.
+std::size_t point_count(const SweepSpec& spec);
+
+struct SweepPoint {
+  std::size_t index = 0;
+  // Per parameter: the value as given to the problem (levels as written; sampled numbers in
+  // their shortest exact decimal form) and as a number (NaN for a word).
+  std::vector<std::string> texts;
+  std::vector<double> values;
+  std::uint64_t seed = 0;  // this point's own seed (from the spec's seed and the index)
+};
+
+// Point `index` (< point_count(spec)) of a valid spec.  Throws std::invalid_argument otherwise.
+SweepPoint sweep_point(const SweepSpec& spec, std::size_t index);
+
+// The problem at a point.  May throw (InvalidInput or the caller's own error) for a point that
+// is not a valid problem; sweep() checks every point before it solves any.
+using ProblemOfPoint = std::function<Problem(const SweepPoint&)>;
+
+struct SweepPuncture : Outcome {  // of predict_puncture
+  double force_n = 0.0;
+  double depth_mm = 0.0;
+  double part_three_stretch = 1.0;
+  double max_first_invariant = 3.0;        // the failure measure at puncture
+  double crack_reference_radius_mm = 0.0;  // where I1 peaks: reference radius ...
+  double crack_radius_mm = 0.0;            // ... and current distance from the axis
+  std::string crack_location;              // in words
+};
+
+struct SweepForceAtDepth : Outcome {  // of solve_at_depth
+  double depth_mm = 0.0;
+  double force_n = 0.0;
+};
+
+// One point's results.  status: Converged when every output was found, else the first failed
+// output's status, the message naming the output.
+struct SweepRow : Outcome {
+  SweepPoint point;
+  std::optional<SweepPuncture> puncture;    // when outputs.puncture
+  std::vector<SweepForceAtDepth> at_depth;  // one per outputs.force_at_depth_mm
+};
+
+// Evaluates one problem (the work of one point; also what a benchmark times).
+SweepRow evaluate_point(const Problem& problem, const SweepOutputs& outputs,
+                        const SolverOptions& options = {});
+
+struct SweepProgress {
+  std::size_t done = 0;    // rows delivered in this run (after first_point)
+  std::size_t to_do = 0;   // rows this run delivers in all
+  std::size_t failed = 0;  // of those done, rows whose status is not Converged
+  double elapsed_s = 0.0;  // since the solves started
+};
+
+struct SweepOptions {
+  int threads = 0;              // 0: every core (OpenMP's default); 1: serial
+  std::size_t first_point = 0;  // points before it are done already (resume); none solved
+  // This process solves the points first_point + offset + k stride (k = 0, 1, ...): one share
+  // of a sweep spread over processes (MPI rank `offset` of `stride`); rows in that order.
+  std::size_t stride = 1;
+  std::size_t offset = 0;
+  // Rows solved ahead of the oldest undelivered one, per thread: bounds the memory held
+  // whatever the number of points.
+  std::size_t window_per_thread = 64;
+  SolverOptions solver{};  // record_fields is switched off
+  // Receives every row in point order, one call at a time (from whichever thread drains the
+  // window).  An exception thrown here stops the sweep and is rethrown by sweep().
+  std::function<void(const SweepRow&)> on_row;
+  // Called after rows are delivered (serialised with on_row), at most every `progress_every_s`.
+  std::function<void(const SweepProgress&)> progress;
+  double progress_every_s = 0.5;
+  // When set and true, no further point is started; the rows solved are delivered and the
+  // summary is Incomplete (e.g. set by a SIGINT handler).
+  const std::atomic<bool>* stop = nullptr;
+};
+
+struct SweepSummary : Outcome {  // Converged when all own_points were delivered, else Incomplete
+  std::size_t total_points = 0;
+  std::size_t first_point = 0;
+  std::size_t own_points = 0;  // this run's points: from first_point on, this process's share
+  std::size_t delivered = 0;   // rows delivered in this run
+  std::size_t converged = 0;
+  std::size_t failed_physical = 0;
+  std::size_t failed_numerical = 0;
+  std::size_t failed_outside_model = 0;
+  int threads = 1;
+  double validation_s = 0.0;  // building and checking every point's problem
+  double solve_s = 0.0;       // the solves and the sink
+  double points_per_second() const;
+  std::string brief_report() const;  // one line
+  std::string full_report() const;
+};
+
+// Checks the spec and every point's problem (throws std::invalid_argument / the problem_of's
+// exception for the lowest invalid point), then solves the points from options.first_point on,
+// in parallel, delivering every row in point order to options.on_row.
+SweepSummary sweep(const SweepSpec& spec, const ProblemOfPoint& problem_of,
+                   const SweepOptions& options = {});
+
+}  // namespace puncture

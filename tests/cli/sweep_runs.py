@@ -1,0 +1,179 @@
+#!/usr/bin/python3
+"""Runs `puncture sweep` several ways and checks that every way writes the same file.
+
+  sweep_runs.py threads PUNCTURE SPEC WORKDIR   serial, --threads 2 and --threads 3: identical
+  sweep_runs.py resume PUNCTURE SPEC WORKDIR    killed mid-run (SIGKILL, a row cut short; and
+                                                SIGINT) then --resume: identical to one run
+  sweep_runs.py matches PUNCTURE SPEC WORKDIR   every row equal to `puncture puncture` and
+                                                `puncture state --depth D` with its flags
+  sweep_runs.py plot PUNCTURE SPEC WORKDIR      --plot map.svg: the map is drawn, its failed
+                                                points marked
+  sweep_runs.py mpi PUNCTURE SPEC WORKDIR MPIRUN
+                                                mpirun -n 2 and -n 3 (2 threads each), and a
+                                                killed serial run resumed by mpirun -n 2:
+                                                identical to the serial run
+Exit 0 when the files are identical, 1 (with the difference) otherwise.
+"""
+import csv
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+import tomllib
+
+
+# mpirun refuses root unless told (containers, CI); --oversubscribe: more ranks than cores.
+MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+def run(exe, spec, out, *extra, launcher=()):
+    for stale in (out, out + ".part", out + ".part.spec"):
+        if os.path.exists(stale) and "--resume" not in extra:
+            os.remove(stale)
+    r = subprocess.run([*launcher, exe, "sweep", spec, "-o", out, "--quiet", *extra],
+                       capture_output=True, text=True, timeout=600,
+                       env=MPI_ENV if launcher else None)
+    if r.returncode != 0:
+        sys.exit(f"puncture sweep {' '.join(extra)} failed ({r.returncode}):\n{r.stderr}")
+    return open(out, "rb").read()
+
+
+def same(name_a, a, name_b, b):
+    if a == b:
+        return
+    la, lb = a.decode().splitlines(), b.decode().splitlines()
+    for i, (x, y) in enumerate(zip(la, lb)):
+        if x != y:
+            sys.exit(f"{name_a} and {name_b} differ at line {i + 1}:\n  {x}\n  {y}")
+    sys.exit(f"{name_a} has {len(la)} lines, {name_b} {len(lb)}")
+
+
+def rows_in(path):
+    try:
+        with open(path, "rb") as f:
+            return f.read().count(b"\n") - 1
+    except FileNotFoundError:
+        return -1
+
+
+def interrupted(exe, spec, out, sig, after_rows):
+    """Starts the sweep on one thread, sends `sig` once `after_rows` rows are written."""
+    for stale in (out, out + ".part", out + ".part.spec"):
+        if os.path.exists(stale):
+            os.remove(stale)
+    p = subprocess.Popen([exe, "sweep", spec, "-o", out, "--quiet", "--threads", "1"],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    deadline = time.time() + 300
+    while rows_in(out + ".part") < after_rows:
+        if p.poll() is not None or time.time() > deadline:
+            sys.exit(f"the sweep ended before {after_rows} rows: cannot interrupt it")
+        time.sleep(0.005)
+    p.send_signal(sig)
+    p.wait(timeout=300)
+    if p.returncode != -sig:
+        sys.exit(f"expected the sweep to end by signal {sig}, got {p.returncode}: "
+                 f"{p.stderr.read().decode()}")
+    if os.path.exists(out):
+        sys.exit(f"{out} exists after an interrupted run: it must only appear complete")
+    return rows_in(out + ".part")
+
+
+def solve(exe, command, flags):
+    r = subprocess.run([exe, *command, *flags, "--format", "json"], capture_output=True,
+                       text=True, timeout=600)
+    return r.returncode, json.loads(r.stdout)
+
+
+def matches(exe, spec_path, csv_path):
+    """Each row's numbers are those of the single-problem commands with the same flags, exactly
+    (both print the shortest exact decimal of each double); a failed row fails there too, with
+    the same status."""
+    with open(spec_path, "rb") as f:
+        spec = tomllib.load(f)
+    fixed = [f"--{k}={v}" for k, v in spec.get("problem", {}).items()]
+    names = list(spec["parameters"])
+    depths = spec.get("force-at-depth", [])
+    with open(csv_path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    for row in rows:
+        flags = fixed + [f"--{n}={row[n]}" for n in names]
+        rc, doc = solve(exe, ["puncture"], flags)
+        if row["status"] == "converged" or row["puncture_force_n"]:
+            if rc != 0:
+                sys.exit(f"row {row['point']}: the sweep found a puncture, `puncture` did not")
+            for column, key in (("puncture_force_n", "force_n"), ("puncture_depth_mm", "depth_mm"),
+                                ("max_i1", "max_i1"), ("crack_location", "crack_location")):
+                want = doc["puncture"][key]
+                got = row[column] if key == "crack_location" else float(row[column])
+                if got != want:
+                    sys.exit(f"row {row['point']} {column}: sweep {got}, puncture {want}")
+        elif rc != 2 or doc["error"]["status"] != row["status"]:
+            sys.exit(f"row {row['point']}: the sweep's status {row['status']}, `puncture` "
+                     f"exit {rc} {doc.get('error', {}).get('status')}")
+        for depth in depths:
+            rc, doc = solve(exe, ["state", f"--depth={depth}"], flags)
+            cell = row[f"force_n_at_{depth:g}_mm"]
+            if (rc == 0) != (cell != "") or (rc == 0 and float(cell) != doc["state"]["force_n"]):
+                sys.exit(f"row {row['point']} force at {depth} mm: sweep '{cell}', state {doc}")
+    print(f"{len(rows)} rows equal to the single-problem commands")
+
+
+def main():
+    mode, exe, spec, workdir = sys.argv[1:5]
+    os.makedirs(workdir, exist_ok=True)
+    out = lambda name: os.path.join(workdir, name)
+    if mode == "threads":
+        serial = run(exe, spec, out("serial.csv"), "--threads", "1")
+        for n in ("2", "3"):
+            same("serial", serial, f"{n} threads", run(exe, spec, out(f"t{n}.csv"), "--threads", n))
+        rows = serial.count(b"\n") - 1
+        print(f"identical: {rows} rows with 1, 2 and 3 threads")
+    elif mode == "resume":
+        whole = run(exe, spec, out("whole.csv"), "--threads", "2")
+        # SIGKILL: no chance to clean up; then a row cut short as a kill mid-write leaves it.
+        rows = interrupted(exe, spec, out("killed.csv"), signal.SIGKILL, 3)
+        with open(out("killed.csv.part"), "ab") as f:
+            f.write(b"17,0.3")
+        resumed = run(exe, spec, out("killed.csv"), "--resume", "--threads", "2")
+        same("uninterrupted", whole, "killed and resumed", resumed)
+        # SIGINT: the points in hand are finished and written, then the program ends by SIGINT.
+        rows2 = interrupted(exe, spec, out("stopped.csv"), signal.SIGINT, 5)
+        resumed = run(exe, spec, out("stopped.csv"), "--resume")
+        same("uninterrupted", whole, "interrupted and resumed", resumed)
+        print(f"identical after a kill at {rows} rows and an interrupt at {rows2} rows")
+    elif mode == "mpi":
+        mpirun = sys.argv[5]
+        serial = run(exe, spec, out("serial.csv"), "--threads", "1")
+        for n, threads in (("2", "1"), ("3", "2")):
+            same("serial", serial, f"mpirun -n {n}",
+                 run(exe, spec, out(f"mpi{n}.csv"), "--threads", threads,
+                     launcher=(mpirun, "-n", n)))
+        rows = interrupted(exe, spec, out("killed.csv"), signal.SIGKILL, 5)
+        with open(out("killed.csv.part"), "ab") as f:
+            f.write(b"9,0.")
+        resumed = run(exe, spec, out("killed.csv"), "--resume", launcher=(mpirun, "-n", "2"))
+        same("serial", serial, "killed, resumed by mpirun -n 2", resumed)
+        print(f"identical: serial, mpirun -n 2 and -n 3, and a kill at {rows} rows resumed "
+              f"by mpirun -n 2")
+    elif mode == "plot":
+        svg = out("map.svg")
+        if os.path.exists(svg):
+            os.remove(svg)
+        run(exe, spec, out("map.csv"), "--plot", svg)
+        text = open(svg, encoding="utf-8").read()
+        for word in ("puncture force", "failed"):
+            if word not in text:
+                sys.exit(f"{svg} has no '{word}'")
+        print(f"{svg} drawn, failed points marked")
+    elif mode == "matches":
+        run(exe, spec, out("matches.csv"), "--threads", "2")
+        matches(exe, spec, out("matches.csv"))
+    else:
+        sys.exit(f"unknown mode {mode}")
+
+
+if __name__ == "__main__":
+    main()
