@@ -6,7 +6,7 @@
 # `cpack -G DEB`).
 set -euo pipefail
 packages=(build-essential cmake libboost-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
-          libfmt-dev libgtest-dev libbenchmark-dev librapidcheck-dev libceres-dev
+          libfmt-dev libgtest-dev libbenchmark-dev librapidcheck-dev libceres-dev libtoml11-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-matplotlib
           python3-pytest python3-scipy help2man dpkg-dev)
 missing=()
