@@ -77,7 +77,14 @@ struct CurveFitOptions {
   // puncture between nominally equal tests (a few %), far above the force noise of one record.
   double puncture_force_sd_fraction = 0.05;
   double puncture_depth_sd_fraction = 0.05;
-  int max_iterations = 100;  // Levenberg-Marquardt steps (a fit takes 3-15)
+  int max_iterations = 100;  // Levenberg-Marquardt steps, successful or not
+  // Ceres' stops: a relative decrease of the cost below function_tolerance, or a relative step
+  // below parameter_tolerance.  At the optimum the model's own noise (~1e-9 relative in the
+  // force) makes the cost wander along a correlated valley: below 1e-8 the steps only dither
+  // there (measured, G, J_lim and friction from one record: 4 steps and 30 curves at 1e-8, 16
+  // steps and 135 curves at 1e-10, the estimates 1e-5 relative apart, ~1e-3 standard errors).
+  double function_tolerance = 1e-8;
+  double parameter_tolerance = 1e-9;
   // Central differences of the model in every parameter but the shear modulus (exact: the force
   // is proportional to it), with step relative_step max(|x|, typical scale).  The curve is
   // accurate to ~1e-9 relative, so 1e-3 balances truncation (~step^2) and noise (~1e-9 / step)

@@ -170,15 +170,13 @@ struct FitProblem {
   }
 };
 
-Solved run(FitProblem& fp, int max_iterations) {
+Solved run(FitProblem& fp, const CurveFitOptions& o) {
   ceres::Solver::Options options;
   options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = max_iterations;
-  // The model is accurate to ~1e-9 relative: a relative step below 1e-9 or a relative cost
-  // change below 1e-12 is the model's noise, not progress.
-  options.function_tolerance = 1e-12;
-  options.parameter_tolerance = 1e-9;
+  options.max_num_iterations = o.max_iterations;
+  options.function_tolerance = o.function_tolerance;
+  options.parameter_tolerance = o.parameter_tolerance;
   options.gradient_tolerance = 1e-16;
   options.num_threads = 1;
   options.logging_type = ceres::SILENT;
@@ -283,6 +281,8 @@ void check_input(const CurveFitProblem& problem, const CurveFitOptions& o) {
   if (!(o.relative_step > 0.0 && o.relative_step < 0.1))
     errors.push_back({"relative_step", "the difference step must be in (0, 0.1)"});
   if (o.max_iterations < 1) errors.push_back({"max_iterations", "must be >= 1"});
+  if (!(o.function_tolerance > 0.0) || !(o.parameter_tolerance > 0.0))
+    errors.push_back({"tolerance", "the function and parameter tolerances must be > 0"});
   for (const auto& b : o.bounds)
     if (!(b.lower < b.upper) || !std::isfinite(b.lower) || !std::isfinite(b.upper))
       errors.push_back({"bounds",
@@ -365,7 +365,7 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
   for (const auto& t : problem.tests) points += static_cast<int>(t.depth_mm.size());
   if (held.size() < p) {
     FitProblem stage1(models, o, bounds, steps, x, Weights{}, false, held);
-    const auto s1 = run(stage1, o.max_iterations);
+    const auto s1 = run(stage1, o);
     fit.iterations += s1.iterations;
     if (!s1.usable)
       return fail(Status::NoConvergence,
@@ -393,7 +393,7 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
   weights.curve = 1.0 / s;
   FitProblem stage2(models, o, bounds, steps, x, weights, true, {});
   if (any_puncture) {
-    const auto s2 = run(stage2, o.max_iterations);
+    const auto s2 = run(stage2, o);
     fit.iterations += s2.iterations;
     if (!s2.usable)
       return fail(Status::NoConvergence,

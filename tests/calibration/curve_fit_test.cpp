@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -138,6 +139,7 @@ TEST(CurveFit, ShearModulusIntervalsCoverTheTruth) {
     ASSERT_TRUE(fit.ok()) << fit.message;
     inside += covers(fit.parameters[0], 0.06);
   }
+  std::printf("%d of %d 95 %% intervals hold the truth\n", inside, n);
   EXPECT_GE(inside, (9 * n + 9) / 10) << inside << " of " << n;
 }
 
@@ -153,6 +155,7 @@ TEST(CurveFit, JLimIntervalsCoverTheTruth) {
     ASSERT_TRUE(fit.ok()) << fit.message;
     inside += covers(fit.parameters[0], 125.0);
   }
+  std::printf("%d of %d 95 %% intervals hold the truth\n", inside, n);
   EXPECT_GE(inside, (9 * n + 9) / 10) << inside << " of " << n;
 }
 
