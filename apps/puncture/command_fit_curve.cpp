@@ -364,7 +364,8 @@ void add_fit_curve_command(CLI::App& fit, FitCurveFlags& f) {
       ->group(kFit);
 }
 
-std::string run_fit_curve(const ProblemFlags& pf, const FitCurveFlags& f, Format format) {
+std::string run_fit_curve(const ProblemFlags& pf, const FitCurveFlags& f, Format format,
+                          std::string* json) {
   const RecordFormat base_format = format_of(f);
   std::vector<TestSpec> specs;
   if (!f.manifest.empty()) {
@@ -421,6 +422,7 @@ std::string run_fit_curve(const ProblemFlags& pf, const FitCurveFlags& f, Format
     throw InputError("invalid curve fit:" + message);
   }
   if (!report.fit.ok()) throw SolveError(report.fit.message, report.fit.status);
+  if (json) *json = curve_fit_text(report, Format::Json);
   return curve_fit_text(report, format);
 }
 

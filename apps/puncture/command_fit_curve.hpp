@@ -36,6 +36,9 @@ struct FitCurveFlags {
 
 void add_fit_curve_command(CLI::App& fit, FitCurveFlags& flags);
 
-std::string run_fit_curve(const ProblemFlags& problem, const FitCurveFlags& flags, Format format);
+// The output text in `format`; with `json`, also the JSON output there (for --plot), without
+// fitting twice.
+std::string run_fit_curve(const ProblemFlags& problem, const FitCurveFlags& flags, Format format,
+                          std::string* json = nullptr);
 
 }  // namespace puncture::cli

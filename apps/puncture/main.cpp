@@ -93,7 +93,8 @@ int main(int argc, char** argv) {
                        plot_path,
                        "Also draw the result to FILE (.png, .svg or .pdf) with matplotlib:\n"
                        "curve: force against depth, stages shaded, puncture marked;\n"
-                       "state: deformed profile, stretches and I1 along the radius")
+                       "state: deformed profile, stretches and I1 along the radius;\n"
+                       "fit curve: the records and the fitted curves, with residuals")
             ->group("Output")
             ->type_name("FILE");
     app.add_subcommand("curve", "Loading curve from zero depth to puncture (the default)")
@@ -131,12 +132,24 @@ int main(int argc, char** argv) {
       return kExitBadInput;
     }
 
+    if (calibration_flags.parsed() && plot_option->count() > 0 &&
+        calibration_flags.curve.app->parsed()) {
+      // `fit curve --plot`: the data and the fitted curves, drawn from the fit's JSON.
+      check_plot_target(plot_path);
+      const auto format = format_of(output_flags);
+      check_writable(output_flags);
+      std::string json;
+      write_output(output_flags,
+                   run_fit_curve(problem_flags, calibration_flags.curve, format, &json));
+      run_plot_script("fit-curve", json, plot_path);
+      return kExitOk;
+    }
     if (calibration_flags.parsed()) {
-      // Refused rather than ignored: no calibration draws a figure yet.
+      // Refused rather than ignored: no other calibration draws a figure yet.
       if (plot_option->count() > 0)
         throw InputError(
-            "--plot: 'calibrate' and 'fit' draw no figure yet; their --format json output holds "
-            "the numbers to plot");
+            "--plot: 'calibrate' and 'fit' draw no figure yet (but 'fit curve'); their --format "
+            "json output holds the numbers to plot");
       const auto format = format_of(output_flags);
       check_writable(output_flags);
       write_output(output_flags, run_calibration(app, problem_flags, calibration_flags, format));

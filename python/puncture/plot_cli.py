@@ -3,6 +3,7 @@
     python3 plot_cli.py curve   CURVE.json   OUT.png|svg|pdf   (puncture curve --format json)
     python3 plot_cli.py state   STATE.json   OUT.png|svg|pdf   (puncture state --format json)
     python3 plot_cli.py figures FIGURES.json OUT_DIR           (puncture figures)
+    python3 plot_cli.py fit-curve FIT.json   OUT.png|svg|pdf   (puncture fit curve --format json)
 
 Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2 bad usage,
 3 numpy or matplotlib missing, 1 any other failure; the reason goes to stderr.
@@ -11,7 +12,7 @@ Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2
 import json
 import sys
 
-KINDS = ("curve", "state", "figures")
+KINDS = ("curve", "state", "figures", "fit-curve")
 EXIT_USAGE = 2
 EXIT_MISSING_MODULE = 3
 
@@ -28,7 +29,7 @@ def _modules():
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 3 or argv[0] not in KINDS:
-        print("usage: plot_cli.py curve|state|figures DATA.json OUTPUT", file=sys.stderr)
+        print("usage: plot_cli.py curve|state|figures|fit-curve DATA.json OUTPUT", file=sys.stderr)
         return EXIT_USAGE
     kind, data_path, target = argv
     try:
@@ -50,6 +51,8 @@ def main(argv=None):
             plots.loading_curve(data, target)
         elif kind == "state":
             plots.state_overview(data, target)
+        elif kind == "fit-curve":
+            plots.fit_curves(data, target)
         else:
             for path in paper_figures.draw_all(data, target):
                 print(path)

@@ -129,6 +129,18 @@ def test_cli_plot_curve(tmp_path, cli, suffix):
     (check_png if suffix == ".png" else check_svg)(target)
 
 
+def test_cli_plot_fit_curve(tmp_path, cli):
+    """fit curve --plot: the records, the fitted curves and the residuals, from the fit's JSON."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    record = os.path.join(here, "..", "..", "tests", "cli", "indentation_record.csv")
+    target = tmp_path / "fit.png"
+    rc, out, err = cli.run("fit", "curve", record, "--free", "shear-modulus,jlim",
+                           "--contact-depth", "2", "--plot", target)
+    assert rc == 0, err
+    assert "shear-modulus" in out  # the report is still written
+    check_png(target)
+
+
 def test_cli_plot_state(tmp_path, cli):
     target = tmp_path / "state.png"
     rc, out, err = cli.run("state", "--depth", "20", "--plot", target)
