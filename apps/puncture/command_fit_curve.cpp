@@ -279,8 +279,8 @@ void add_fit_curve_command(CLI::App& fit, FitCurveFlags& f) {
       ->add_option("--free",
                    f.free,
                    "Parameters to fit, comma-separated: shear-modulus [MPa], jlim,\n"
-                   "friction, critical-i1 (needs a puncture point), stick-threshold\n"
-                   "[the --stick rule's unit]")
+                   "friction, critical-i1 (needs a puncture point); stick-threshold\n"
+                   "is refused so far (a step function of the residuals)")
       ->required()
       ->type_name("LIST")
       ->group(kFit);

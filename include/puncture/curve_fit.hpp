@@ -26,7 +26,8 @@ namespace puncture {
 
 // A parameter the fit can determine.  The shear modulus scales the force (F = 2 pi G H A f);
 // J_lim (Gent) and the friction shape the curve; the critical I1 sets only where it ends (the
-// puncture point); the stick threshold where the membrane starts to slide.
+// puncture point); the stick threshold where the membrane starts to slide (refused by fit_curves
+// so far: the residuals are a step function of it).
 enum class CurveParameter { ShearModulus, JLim, Friction, CriticalI1, StickThreshold };
 
 // "shear-modulus", "jlim", "friction", "critical-i1", "stick-threshold" (as on the command line).
@@ -142,8 +143,9 @@ struct CurveFit : Outcome {
   std::vector<Problem> fitted_problems;  // each test's problem at the estimates
 };
 
-// Throws InvalidInput: no test or no free parameter, a parameter twice, a parameter the
-// problems do not have (J_lim without Gent), the critical I1 free without a puncture point,
+// Throws InvalidInput: no test or no free parameter, a parameter twice, stick-threshold free,
+// a parameter the problems do not have (J_lim without Gent), the critical I1 free without a
+// puncture point,
 // a test with fewer points than free parameters + 1, mismatched lengths, a depth that is not
 // finite and > 0 or decreases, a force that is not finite, a bound not around the start, an
 // invalid problem or options.

@@ -269,6 +269,13 @@ void check_input(const CurveFitProblem& problem, const CurveFitOptions& o) {
              fmt::format("test {}: the puncture point must have a force and a depth > 0", t.name)});
     }
   }
+  if (std::find(o.free.begin(), o.free.end(), CurveParameter::StickThreshold) != o.free.end())
+    errors.push_back(
+        {"free",
+         "stick-threshold cannot be fitted by gradients yet: the force jumps at the stick -> "
+         "slip switch, so between two measured depths a change of the threshold changes no "
+         "residual (its derivative is 0, measured: a start at 0.25 N against 0.3 N stays there "
+         "with a standard error of 9e3 N); it needs a profile search over the switch"});
   if (std::find(o.free.begin(), o.free.end(), CurveParameter::CriticalI1) != o.free.end() &&
       !any_puncture)
     errors.push_back({"free",
@@ -498,6 +505,24 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
       fp.standard_error = std::sqrt(cov[j * p + j]);
       fp.ci_lower = x[j] - t_quantile * *fp.standard_error;
       fp.ci_upper = x[j] + t_quantile * *fp.standard_error;
+      // Within two standard errors of zero (as fit_uniaxial): the data bound the parameter
+      // no better than its own size.
+      if (2.0 * *fp.standard_error >= std::abs(x[j])) {
+        fp.identifiable = false;
+        fp.note = fmt::format(
+            "not identifiable: {} +- {} is within two standard errors of 0; {} "
+            "would identify it",
+            x[j],
+            *fp.standard_error,
+            identifying_test(o.free[j]));
+        fit.warnings.push_back(
+            fmt::format("{} is not identifiable from these tests ({:.4g} +- {:.2g}); it would "
+                        "take {}",
+                        fp.name,
+                        x[j],
+                        *fp.standard_error,
+                        identifying_test(o.free[j])));
+      }
     } else {
       fp.identifiable = false;
       fp.note = "no standard error: " + identifying_test(o.free[j]) + " would identify it";
@@ -536,13 +561,26 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
   for (const auto& fp : fit.parameters)
     if (fp.on_bound) {
       fit.status = Status::OnBound;
+      const auto& b = bounds[static_cast<std::size_t>(&fp - fit.parameters.data())];
+      const bool lower = fp.value - b.lower <= b.upper - fp.value;
+      const bool jlim_floor =
+          fp.parameter == CurveParameter::JLim && lower && !index_of(CurveParameter::CriticalI1);
+      const bool jlim_ceiling = fp.parameter == CurveParameter::JLim && !lower;
       fit.message = fmt::format(
           "{} = {:.6g} lies on a bound of its range [{:.6g}, {:.6g}]: the data want a value "
-          "outside it, and the estimates are not a fit inside the model",
+          "outside it, and the estimates are not a fit inside the model{}",
           fp.name,
           fp.value,
-          bounds[static_cast<std::size_t>(&fp - fit.parameters.data())].lower,
-          bounds[static_cast<std::size_t>(&fp - fit.parameters.data())].upper);
+          b.lower,
+          b.upper,
+          jlim_floor ? " (J_lim must exceed the critical I1 - 3: a record that does not reach "
+                       "the puncture may want a smaller one; a lower critical I1 lowers the "
+                       "bound)"
+          : jlim_ceiling
+              ? fmt::format(" (the records show no Gent stiffening, a neo-Hookean response: "
+                            "J_lim is not identifiable from them; it would take {})",
+                            identifying_test(CurveParameter::JLim))
+              : std::string());
       fit.warnings.push_back(fit.message);
       return fit;
     }

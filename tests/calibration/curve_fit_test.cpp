@@ -34,10 +34,19 @@ CurveTest synthetic(const Problem& truth, int n, double noise_fraction, unsigned
   c.depths_mm = t.depth_mm;
   const auto curve = loading_curve(truth, c);
   EXPECT_TRUE(curve.ok()) << curve.message;
+  // One force per depth: at a stick -> slip switch the curve has two points at its depth (held,
+  // then sliding); a machine at that depth reads the sliding one.
+  std::vector<double> force;
+  for (const double d : t.depth_mm) {
+    double f = 0.0;
+    for (const auto& pt : curve.points)
+      if (pt.depth_mm == d) f = pt.force_n;
+    force.push_back(f);
+  }
   double f_max = 0.0;
-  for (const auto& pt : curve.points) f_max = std::max(f_max, pt.force_n);
+  for (const double f : force) f_max = std::max(f_max, f);
   test::SeededNoise noise(seed, noise_fraction * f_max);
-  for (const auto& pt : curve.points) t.force_n.push_back(pt.force_n + noise());
+  for (const double f : force) t.force_n.push_back(f + noise());
   if (puncture) t.puncture = MeasuredPuncture{p.depth_mm, p.force_n};
   return t;
 }
@@ -186,6 +195,24 @@ TEST(CurveFit, JointFitOfTwoTestsRecoversThreeParameters) {
   EXPECT_EQ(fit.points, 200);
 }
 
+// A membrane held until the force reaches 0.3 N: the force jumps at the switch, so the residuals
+// are a step function of the threshold and a gradient fit cannot move it; refused, saying why.
+// G alone is fitted through the switch (a measured depth there reads the sliding state).
+TEST(CurveFit, StickThresholdIsRefusedAndTheSwitchIsFollowed) {
+  Problem truth = paper();
+  truth.stick = {StickRule::Force, 0.3};
+  auto test = synthetic(truth, 120, 0.002, 41);
+  CurveFitOptions o;
+  o.free = {CurveParameter::ShearModulus, CurveParameter::StickThreshold};
+  EXPECT_THROW(fit_curves({{test}}, o), InvalidInput);
+  o.free = {CurveParameter::ShearModulus};
+  test.problem.material.shear_modulus_mpa = 0.07;
+  const auto fit = fit_curves({{test}}, o);
+  ASSERT_TRUE(fit.ok()) << fit.message;
+  EXPECT_TRUE(covers(fit.parameters[0], 0.06)) << fit.parameters[0].value;
+  EXPECT_EQ(unit_of(CurveParameter::StickThreshold, truth), "N");
+}
+
 // The critical I1 moves only the puncture point: with it, it is fitted with G.
 TEST(CurveFit, PuncturePointDeterminesTheCriticalI1) {
   auto test = synthetic(paper(), 80, 0.003, 21, 1.0, true);
@@ -198,6 +225,24 @@ TEST(CurveFit, PuncturePointDeterminesTheCriticalI1) {
   EXPECT_NEAR(fit.parameters[1].value, 95.2, 0.5);
   EXPECT_TRUE(covers(fit.parameters[1], 95.2));
   ASSERT_TRUE(fit.tests[0].model_puncture);
+}
+
+// A record that stops at a third of the puncture depth hardly reaches the Gent stiffening: its
+// J_lim is not identifiable, and the fit says so and which test would identify it: a warning
+// at an interior optimum, or (this seed) J_lim run off to its upper bound, neo-Hookean.
+TEST(CurveFit, ShallowRecordLeavesJLimNotIdentifiable) {
+  auto test = synthetic(paper(), 60, 0.005, 31, 0.3);
+  test.problem.critical_i1 = 10.0;  // J_lim's floor, critical I1 - 3, out of the way
+  CurveFitOptions o;
+  o.free = {CurveParameter::ShearModulus, CurveParameter::JLim};
+  const auto fit = fit_curves({{test}}, o);
+  EXPECT_FALSE(fit.parameters[1].identifiable && fit.ok());
+  const std::string text = fit.ok() ? fit.warnings.at(0) : fit.message;
+  EXPECT_TRUE(fit.ok() || fit.status == Status::OnBound) << fit.message;
+  EXPECT_NE(text.find("not identifiable"), std::string::npos) << text;
+  EXPECT_NE(text.find("deeper"), std::string::npos) << text;
+  // G stays determined: the force scale is in every point.
+  EXPECT_NEAR(fit.parameters[0].value, 0.06, 0.06 * 0.05);
 }
 
 // A flat record is no indentation curve: no clear "converged".
