@@ -145,10 +145,10 @@ struct CurveFit : Outcome {
 
 // Throws InvalidInput: no test or no free parameter, a parameter twice, stick-threshold free,
 // a parameter the problems do not have (J_lim without Gent), the critical I1 free without a
-// puncture point,
-// a test with fewer points than free parameters + 1, mismatched lengths, a depth that is not
-// finite and > 0 or decreases, a force that is not finite, a bound not around the start, an
-// invalid problem or options.
+// puncture point, a test with fewer points than free parameters + 1, mismatched lengths, a
+// depth that is not finite and > 0 or decreases, a force that is not finite, bounds that are
+// not finite with lower < upper, an invalid problem or options.  The start is clamped into the
+// bounds.
 CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& options);
 
 std::string to_string(RobustLoss loss);

@@ -49,3 +49,7 @@ puncture_cli_bad_input(fit_curve_bad_bound "--bound: expected NAME:LO:HI"
   fit curve ${dir}/indentation_record.csv --free jlim --bound jlim:500:50)
 puncture_cli_bad_input(fit_curve_no_files "give the CSV records"
   fit curve --free jlim)
+puncture_cli_bad_input(fit_curve_stick_threshold_refused
+  "--free: stick-threshold cannot be fitted by gradients yet"
+  fit curve ${dir}/indentation_record.csv --free stick-threshold --stick force:0.3
+  --contact-depth 2)
