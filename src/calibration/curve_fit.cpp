@@ -43,10 +43,20 @@ enum class Block { Curve, Puncture };
 
 class ModelCost : public ceres::CostFunction {
  public:
+  // `point`: the curve residual of that point alone (a block per point, so that a robust loss,
+  // which Ceres applies to a block's whole squared norm, acts on each point); -1: every point.
   ModelCost(const CurveModel& model, Block block, const Weights& weights,
-            const std::vector<ParameterBounds>& bounds, const std::vector<double>& steps)
-      : model_(model), block_(block), weights_(weights), bounds_(bounds), steps_(steps) {
-    set_num_residuals(block == Block::Curve ? static_cast<int>(model.test().depth_mm.size()) : 2);
+            const std::vector<ParameterBounds>& bounds, const std::vector<double>& steps,
+            int point = -1)
+      : model_(model),
+        block_(block),
+        weights_(weights),
+        bounds_(bounds),
+        steps_(steps),
+        point_(point) {
+    set_num_residuals(block == Block::Puncture ? 2
+                      : point >= 0             ? 1
+                                               : static_cast<int>(model.test().depth_mm.size()));
     mutable_parameter_block_sizes()->push_back(static_cast<int>(bounds.size()));
   }
 
@@ -103,6 +113,11 @@ class ModelCost : public ceres::CostFunction {
     if (!m.ok) return false;
     const auto& test = model_.test();
     if (block_ == Block::Curve) {
+      if (point_ >= 0) {
+        const auto i = static_cast<std::size_t>(point_);
+        r[0] = weights_.curve * (m.force_n[i] - test.force_n[i]);
+        return true;
+      }
       for (std::size_t i = 0; i < m.force_n.size(); ++i)
         r[i] = weights_.curve * (m.force_n[i] - test.force_n[i]);
       return true;
@@ -118,6 +133,7 @@ class ModelCost : public ceres::CostFunction {
   Weights weights_;
   const std::vector<ParameterBounds>& bounds_;
   const std::vector<double>& steps_;
+  int point_;
 };
 
 struct Solved {
@@ -149,10 +165,16 @@ struct FitProblem {
              std::vector<double>& x, const Weights& weights, bool with_puncture,
              const std::vector<int>& held) {
     for (const auto& m : models) {
-      curve_blocks.push_back(
-          problem.AddResidualBlock(new ModelCost(*m, Block::Curve, weights, bounds, steps),
-                                   loss_of(o, weights.curve).release(),
-                                   x.data()));
+      if (o.loss == RobustLoss::None) {
+        curve_blocks.push_back(problem.AddResidualBlock(
+            new ModelCost(*m, Block::Curve, weights, bounds, steps), nullptr, x.data()));
+      } else {
+        for (int i = 0; i < static_cast<int>(m->test().depth_mm.size()); ++i)
+          curve_blocks.push_back(
+              problem.AddResidualBlock(new ModelCost(*m, Block::Curve, weights, bounds, steps, i),
+                                       loss_of(o, weights.curve).release(),
+                                       x.data()));
+      }
       if (with_puncture && m->test().puncture) {
         Weights w = weights;
         w.force = 1.0 / (o.puncture_force_sd_fraction * m->test().puncture->force_n);

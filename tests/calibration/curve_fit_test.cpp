@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -243,6 +244,30 @@ TEST(CurveFit, ShallowRecordLeavesJLimNotIdentifiable) {
   EXPECT_NE(text.find("deeper"), std::string::npos) << text;
   // G stays determined: the force scale is in every point.
   EXPECT_NEAR(fit.parameters[0].value, 0.06, 0.06 * 0.05);
+}
+
+// Outliers (five points 10 % of the largest force too high, a slipping grip): least squares
+// is pulled off the truth, a Huber loss with a scale of twice the noise is not.  (Ceres applies
+// a loss to a residual block's whole squared norm: with one block per test the loss did
+// nothing at all, hence one block per point under a robust loss.)
+TEST(CurveFit, HuberLossResistsOutliers) {
+  auto test = synthetic(paper(), 100, 0.003, 51);
+  const double f_max = *std::max_element(test.force_n.begin(), test.force_n.end());
+  for (const std::size_t i : {20u, 35u, 50u, 65u, 80u}) test.force_n[i] += 0.1 * f_max;
+  CurveFitOptions o;
+  o.free = {CurveParameter::ShearModulus};
+  const auto plain = fit_curves({{test}}, o);
+  ASSERT_TRUE(plain.ok()) << plain.message;
+  o.loss = RobustLoss::Huber;
+  o.loss_scale_n = 2.0 * 0.003 * f_max;
+  const auto huber = fit_curves({{test}}, o);
+  ASSERT_TRUE(huber.ok()) << huber.message;
+  // Least squares is 0.9 % high (its interval, widened by the outliers' share of the residual
+  // sd, still holds the truth); Huber's error is a quarter of that or less.
+  EXPECT_GT(std::abs(plain.parameters[0].value - 0.06), 0.005 * 0.06) << plain.parameters[0].value;
+  EXPECT_LT(std::abs(huber.parameters[0].value - 0.06),
+            0.25 * std::abs(plain.parameters[0].value - 0.06));
+  EXPECT_TRUE(covers(huber.parameters[0], 0.06)) << huber.parameters[0].value;
 }
 
 // A flat record is no indentation curve: no clear "converged".
