@@ -53,3 +53,9 @@ puncture_cli_bad_input(fit_curve_stick_threshold_refused
   "--free: stick-threshold cannot be fitted by gradients yet"
   fit curve ${dir}/indentation_record.csv --free stick-threshold --stick force:0.3
   --contact-depth 2)
+puncture_cli_test(fit_curve_huber
+  STDOUT "  shear-modulus +0.0[56][0-9]* \\+- ${number} MPa"
+  ARGS fit curve ${dir}/indentation_record.csv --free shear-modulus --contact-depth 2
+       --loss huber --loss-scale 0.005)
+puncture_cli_bad_input(fit_curve_loss_without_scale "--loss-scale: --loss cauchy needs a scale"
+  fit curve ${dir}/indentation_record.csv --free jlim --loss cauchy)
