@@ -169,6 +169,73 @@ TEST(CurveFit, JLimIntervalsCoverTheTruth) {
   EXPECT_GE(inside, (9 * n + 9) / 10) << inside << " of " << n;
 }
 
+// Joint fits: two tests (2 and 4 mm probes, 0.2 and 0.3 mm thick) in G, J_lim and friction,
+// and four tests (probes 1 to 4 mm) in G and J_lim, over seeded repeats: every parameter's
+// 95 % interval holds the truth in at least `min_share` of them (10 and 5 repeats by default,
+// 100 under the slow label).  Measured over 40 repeats of the three-parameter fit: 36, 34 and
+// 37 (G, J_lim, friction); the same optimum from the truth as start, so the linearised
+// interval of J_lim is a little short there (its estimate is skewed), hence 80 % for it, not
+// the 90 % the one- and two-parameter fits meet (a pooled residual sd gave 32 of 40).
+void expect_joint_coverage(const std::vector<Problem>& truths,
+                           const std::vector<CurveParameter>& free, int n, unsigned seed0,
+                           double min_share) {
+  const auto start_of = [](CurveParameter f) {
+    return f == CurveParameter::ShearModulus ? 0.07 : f == CurveParameter::JLim ? 110.0 : 0.25;
+  };
+  std::vector<int> inside(free.size(), 0);
+  for (int k = 0; k < n; ++k) {
+    CurveFitProblem problem;
+    for (std::size_t t = 0; t < truths.size(); ++t) {
+      auto test = synthetic(truths[t], 60, 0.005, seed0 + static_cast<unsigned>(100 * k + t));
+      // The free parameters start off the truth; the fixed ones are the truth.
+      for (const auto f : free) set_value(f, test.problem, start_of(f));
+      problem.tests.push_back(test);
+    }
+    CurveFitOptions o;
+    o.free = free;
+    const auto fit = fit_curves(problem, o);
+    ASSERT_TRUE(fit.ok()) << fit.message;
+    for (std::size_t j = 0; j < free.size(); ++j) {
+      const bool in = covers(fit.parameters[j], value_of(free[j], truths.front()));
+      inside[j] += in;
+      if (!in)
+        std::printf("  repeat %d: %s = %.6g +- %.3g\n",
+                    k,
+                    to_token(free[j]).c_str(),
+                    fit.parameters[j].value,
+                    fit.parameters[j].standard_error.value_or(-1.0));
+    }
+  }
+  for (std::size_t j = 0; j < free.size(); ++j) {
+    std::printf(
+        "%s: %d of %d 95 %% intervals hold the truth\n", to_token(free[j]).c_str(), inside[j], n);
+    EXPECT_GE(inside[j], min_share * n) << to_token(free[j]) << ": " << inside[j] << " of " << n;
+  }
+}
+
+TEST(CurveFit, JointTwoTestThreeParameterIntervalsCoverTheTruth) {
+  Problem small = paper(), large = paper();
+  large.indenter = FlatPunch{4.0};
+  large.geometry.thickness_mm = 0.3;
+  expect_joint_coverage(
+      {small, large},
+      {CurveParameter::ShearModulus, CurveParameter::JLim, CurveParameter::Friction},
+      repeats(10),
+      5000,
+      0.8);
+}
+
+TEST(CurveFit, JointFourTestIntervalsCoverTheTruth) {
+  std::vector<Problem> truths;
+  for (const double a : {1.0, 2.0, 3.0, 4.0}) {
+    Problem p = paper();
+    p.indenter = FlatPunch{a};
+    truths.push_back(p);
+  }
+  expect_joint_coverage(
+      truths, {CurveParameter::ShearModulus, CurveParameter::JLim}, repeats(5), 9000, 0.9);
+}
+
 // Two tests of one material with different probes, fitted jointly in G, J_lim and friction.
 TEST(CurveFit, JointFitOfTwoTestsRecoversThreeParameters) {
   Problem small = paper(), large = paper();
