@@ -171,11 +171,10 @@ TEST(CurveFit, JLimIntervalsCoverTheTruth) {
 
 // Joint fits: two tests (2 and 4 mm probes, 0.2 and 0.3 mm thick) in G, J_lim and friction,
 // and four tests (probes 1 to 4 mm) in G and J_lim, over seeded repeats: every parameter's
-// 95 % interval holds the truth in at least `min_share` of them (10 and 5 repeats by default,
-// 100 under the slow label).  Measured over 40 repeats of the three-parameter fit: 36, 34 and
-// 37 (G, J_lim, friction); the same optimum from the truth as start, so the linearised
-// interval of J_lim is a little short there (its estimate is skewed), hence 80 % for it, not
-// the 90 % the one- and two-parameter fits meet (a pooled residual sd gave 32 of 40).
+// 95 % interval holds the truth in at least 90 % of 100 repeats (the slow label; measured for
+// the three-parameter fit: 92, 92 and 94 of 100), and of the default run's 10 and 5 at least
+// 80 % (at a true 95 %, 8 of 10 or fewer happens 8.6 % of the time: 90 % would be a coin that
+// fails one run in ten; the first 40 repeats gave 36, 34, 37).
 void expect_joint_coverage(const std::vector<Problem>& truths,
                            const std::vector<CurveParameter>& free, int n, unsigned seed0,
                            double min_share) {
@@ -209,7 +208,8 @@ void expect_joint_coverage(const std::vector<Problem>& truths,
   for (std::size_t j = 0; j < free.size(); ++j) {
     std::printf(
         "%s: %d of %d 95 %% intervals hold the truth\n", to_token(free[j]).c_str(), inside[j], n);
-    EXPECT_GE(inside[j], min_share * n) << to_token(free[j]) << ": " << inside[j] << " of " << n;
+    EXPECT_GE(inside[j], (n >= 100 ? 0.9 : min_share) * n)
+        << to_token(free[j]) << ": " << inside[j] << " of " << n;
   }
 }
 
@@ -233,7 +233,7 @@ TEST(CurveFit, JointFourTestIntervalsCoverTheTruth) {
     truths.push_back(p);
   }
   expect_joint_coverage(
-      truths, {CurveParameter::ShearModulus, CurveParameter::JLim}, repeats(5), 9000, 0.9);
+      truths, {CurveParameter::ShearModulus, CurveParameter::JLim}, repeats(5), 9000, 0.8);
 }
 
 // Two tests of one material with different probes, fitted jointly in G, J_lim and friction.
