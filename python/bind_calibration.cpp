@@ -90,6 +90,7 @@ void bind_calibration(py::module_& m) {
   calibration::bind_j_lim(m);
   calibration::bind_uniaxial(m);
   calibration::bind_band(m);
+  calibration::bind_curve_fit(m);
 }
 
 }  // namespace puncture::python

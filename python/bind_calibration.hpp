@@ -50,5 +50,6 @@ void bind_friction(py::module_& m);     // bind_friction.cpp
 void bind_j_lim(py::module_& m);        // bind_j_lim.cpp
 void bind_uniaxial(py::module_& m);     // bind_uniaxial_fit.cpp
 void bind_band(py::module_& m);         // bind_band.cpp
+void bind_curve_fit(py::module_& m);    // bind_curve_fit.cpp
 
 }  // namespace puncture::python::calibration

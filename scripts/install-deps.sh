@@ -9,7 +9,7 @@
 # (scripts/build-docs.sh): Doxygen, Sphinx, Breathe, MyST and the Read the Docs theme.
 set -euo pipefail
 packages=(build-essential cmake libboost-dev libeigen3-dev libcli11-dev nlohmann-json3-dev
-          libfmt-dev libgtest-dev libbenchmark-dev librapidcheck-dev libceres-dev
+          libfmt-dev libgtest-dev libbenchmark-dev librapidcheck-dev libceres-dev libtoml11-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-matplotlib
           python3-pytest python3-scipy help2man dpkg-dev libtoml11-dev
           libopenmpi-dev openmpi-bin python3-dask python3-distributed

@@ -519,7 +519,8 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
   f.band->add_option("--seed", f.band_seed, "Seed of the Monte Carlo samples (default 1)")
       ->group("Intervals");
 
-  f.fit = app.add_subcommand("fit", "Least-squares fits of material tests: uniaxial");
+  f.fit = app.add_subcommand(
+      "fit", "Least-squares fits of material tests: uniaxial, curve (force-depth records)");
   f.fit->require_subcommand(1);
   f.uniaxial = f.fit->add_subcommand(
       "uniaxial",
@@ -550,6 +551,7 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
       f.uniaxial->add_option("--gauge-length", f.gauge_length_mm, "Initial gauge length [mm] (> 0)")
           ->group("Specimen (force and displacement data)"),
   };
+  add_fit_curve_command(*f.fit, f.curve);
 }
 
 std::string run_calibration(const CLI::App& app, const ProblemFlags& problem,
@@ -558,6 +560,7 @@ std::string run_calibration(const CLI::App& app, const ProblemFlags& problem,
   if (f.friction->parsed()) return run_friction(app, problem, f, format);
   if (f.jlim->parsed()) return run_jlim(app, problem, f, format);
   if (f.band->parsed()) return run_band(problem, f, format);
+  if (f.curve.app->parsed()) return run_fit_curve(problem, f.curve, format);
   return run_fit_uniaxial(app, problem, f, format);
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "command_fit_curve.hpp"
 #include "output_options.hpp"
 #include "problem_options.hpp"
 
@@ -53,6 +54,8 @@ struct CalibrationFlags {
   double specimen_thickness_mm = 0.0;
   double gauge_length_mm = 0.0;
   std::vector<CLI::Option*> specimen_options;
+
+  FitCurveFlags curve;  // fit curve
 
   bool parsed() const { return calibrate->parsed() || fit->parsed(); }
 };

@@ -108,8 +108,10 @@ int main(int argc, char** argv) {
                        "Also draw the result to FILE (.png, .svg or .pdf) with matplotlib:\n"
                        "curve: force against depth, stages shaded, puncture marked;\n"
                        "state: deformed profile, stretches and I1 along the radius;\n"
-                       "fit uniaxial: data, fit and residuals; calibrate band: the\n"
-                       "ranges and puncture points; calibrate jlim: force against J_lim")
+                       "fit uniaxial: data, fit and residuals; fit curve: the\n"
+                       "records, the fitted curves and residuals; calibrate band:\n"
+                       "the ranges and puncture points; calibrate jlim: force\n"
+                       "against J_lim")
             ->group("Output")
             ->type_name("FILE");
     app.add_subcommand("curve", "Loading curve from zero depth to puncture (the default)")
@@ -160,13 +162,25 @@ int main(int argc, char** argv) {
     }
 
     if (sweep_flags.parsed()) return run_sweep(app, sweep_flags, output_flags);
+    if (calibration_flags.parsed() && plot_option->count() > 0 &&
+        calibration_flags.curve.app->parsed()) {
+      // `fit curve --plot`: the data and the fitted curves, drawn from the fit's JSON.
+      check_plot_target(plot_path);
+      const auto format = format_of(output_flags);
+      check_writable(output_flags);
+      std::string json;
+      write_output(output_flags,
+                   run_fit_curve(problem_flags, calibration_flags.curve, format, &json));
+      run_plot_script("fit-curve", json, plot_path);
+      return kExitOk;
+    }
     if (calibration_flags.parsed()) {
       const bool plot = plot_option->count() > 0;
       const char* kind = calibration_plot_kind(calibration_flags);
       if (plot && kind == nullptr)  // refused rather than ignored
         throw InputError(
-            "--plot: draws 'fit uniaxial', 'calibrate band' and 'calibrate jlim'; this "
-            "calibration's --format json output holds its numbers");
+            "--plot: draws 'fit uniaxial', 'fit curve', 'calibrate band' and 'calibrate jlim'; "
+            "this calibration's --format json output holds its numbers");
       if (plot) check_plot_target(plot_path);
       const auto format = format_of(output_flags);
       check_writable(output_flags);

@@ -54,6 +54,9 @@ struct PuncturePrediction : Outcome {
 struct CurveOptions {
   int points = 200;           // depth points from zero to puncture (or to max_depth_mm)
   double max_depth_mm = 0.0;  // stop here instead of at puncture when > 0
+  // When not empty: the curve at exactly these depths [mm] (finite, > 0, strictly increasing)
+  // instead of the even grid (points and max_depth_mm are then ignored); a measured record's.
+  std::vector<double> depths_mm;
   std::function<void(int done, int total)> progress;  // called after each point, if set
 };
 

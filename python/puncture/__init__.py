@@ -12,7 +12,8 @@ moduli and stresses in MPa.
 
 The calibrations of the CLI's `calibrate` and `fit` commands: critical_i1_from_inflation,
 friction_from_hole, j_lim_from_puncture_force, fit_uniaxial (with uniaxial_points and
-uniaxial_points_from_csv), and puncture_band, the puncture force over the parameters' intervals:
+uniaxial_points_from_csv), fit_curves (force-depth records, CurveTest, read_force_depth_record),
+and puncture_band, the puncture force over the parameters' intervals:
 
     band = puncture.puncture_band(problem, critical_i1=puncture.plus_minus(95.2, 4.8))
 
@@ -206,6 +207,25 @@ __all__ += [
     "inflation_burst",
     "inflation_curve",
     "pressure_extrema",
+]
+
+# The fit of force-depth records (`puncture fit curve`).
+from ._puncture import (  # noqa: E402
+    CurveFit,
+    CurveTest,
+    CurveTestFit,
+    FittedCurveParameter,
+    fit_curves,
+    read_force_depth_record,
+)
+
+__all__ += [
+    "CurveFit",
+    "CurveTest",
+    "CurveTestFit",
+    "FittedCurveParameter",
+    "fit_curves",
+    "read_force_depth_record",
 ]
 
 # The second method (finite elements) and the cross-checks of `puncture verify`.

@@ -7,6 +7,7 @@
     python3 plot_cli.py band  BAND.json  OUT.png|svg|pdf       (puncture calibrate band ...)
     python3 plot_cli.py jlim  JLIM.json  OUT.png|svg|pdf       (puncture calibrate jlim ...)
     python3 plot_cli.py sweep   MAP.json     OUT.png|svg|pdf   (puncture sweep --plot)
+    python3 plot_cli.py fit-curve FIT.json   OUT.png|svg|pdf   (puncture fit curve --format json)
 
 Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2 bad usage,
 3 numpy or matplotlib missing, 1 any other failure; the reason goes to stderr.
@@ -15,7 +16,7 @@ Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2
 import json
 import sys
 
-KINDS = ("curve", "state", "figures", "uniaxial-fit", "band", "jlim", "sweep")
+KINDS = ("curve", "state", "figures", "uniaxial-fit", "fit-curve", "band", "jlim", "sweep")
 EXIT_USAGE = 2
 EXIT_MISSING_MODULE = 3
 
@@ -64,6 +65,8 @@ def main(argv=None):
             calibration_plots.j_lim_scan(data, target)
         elif kind == "sweep":
             sweep_plots.design_map(data, target)
+        elif kind == "fit-curve":
+            plots.fit_curves(data, target)
         else:
             for path in paper_figures.draw_all(data, target):
                 print(path)

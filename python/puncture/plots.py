@@ -705,3 +705,40 @@ def inflation_curve(curve, path=None, *, title=None):
         fig.suptitle(title if title is not None
                      else "Inflation (bulge) test\n" + _inflation_title(c.info))
     return _finish(fig, path)
+
+
+def fit_curves(fit, path=None, *, title=None):
+    """`puncture fit curve --format json` drawn: each test's measured force against depth
+    (points) with the fitted model (line) and, below, the residuals; measured (x) and fitted
+    (o) puncture points where the records have them."""
+    _check_path(path)
+    tests = fit["tests"]
+    with matplotlib.rc_context(STYLE):
+        fig = Figure(figsize=(7.5, 6.5), layout="constrained")
+        top, bottom = fig.subplots(2, 1, sharex=True, height_ratios=[3, 1])
+        colours = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
+        for k, t in enumerate(tests):
+            colour = colours[k % len(colours)]
+            name = os.path.basename(t["source"])
+            depth = np.asarray(t["depth_mm"], dtype=float)
+            top.plot(depth, t["force_n"], ".", ms=3, color=colour, label=f"{name} (measured)")
+            top.plot(depth, t["model_force_n"], "-", lw=1.4, color=colour, label=f"{name} (fit)")
+            bottom.plot(depth, t["residual_n"], ".", ms=3, color=colour)
+            for key, marker in (("measured_puncture", "x"), ("model_puncture", "o")):
+                p = t.get(key)
+                if p:
+                    top.plot(p["depth_mm"], p["force_n"], marker, ms=8, mfc="none",
+                             color=colour)
+        bottom.axhline(0.0, color="black", lw=0.8)
+        top.set_ylabel("force [N]")
+        bottom.set_ylabel("model - measured [N]")
+        bottom.set_xlabel("depth from contact [mm]")
+        top.legend(loc="upper left", framealpha=0.9, fontsize="small")
+        estimates = ", ".join(
+            f"{p['name']} = {p['value']:.4g}"
+            + (f" ± {p['standard_error']:.2g}" if p["standard_error"] is not None else "")
+            + (f" {p['unit']}" if p["unit"] else "")
+            for p in fit["fit"]["free"])
+        top.set_title(title if title is not None else
+                      f"Force-depth fit: {estimates}\n(x measured puncture, o fitted)")
+    return _finish(fig, path)

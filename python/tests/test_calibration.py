@@ -372,3 +372,48 @@ def test_uniaxial_fit_on_a_bound_matches_cli(cli):
     assert info.value.status == pu.Status.OnBound
     assert info.value.failure_kind == pu.FailureKind.Physical
     assert "alpha = 0" in message
+
+
+# ----- fit_curves: force-depth records (`puncture fit curve`) ------------------------------------
+
+def test_fit_curves_recovers_an_exact_curve():
+    """The model's own curve, started 33 % and 28 % off, gives back G and J_lim (to the
+    optimiser's stop, 1e-6), with numpy arrays of the points and the model."""
+    truth = pu.Problem()
+    curve = pu.loading_curve(truth, points=41, max_depth_mm=30.0)
+    start = pu.Problem(material=pu.Material(shear_modulus_mpa=0.08, law=pu.Gent(j_lim=160.0)))
+    test = pu.CurveTest(start, curve.depth_mm[1:], curve.force_n[1:], name="exact")
+    fit = pu.fit_curves([test], ["shear-modulus", "jlim"])
+    assert fit.ok
+    assert fit.parameter("shear-modulus").value == pytest.approx(0.06, rel=1e-6)
+    assert fit.parameter("jlim").value == pytest.approx(125.0, rel=1e-6)
+    assert fit.correlation.shape == (2, 2)
+    t = fit.tests[0]
+    assert isinstance(t.model_force_n, np.ndarray) and t.model_force_n.shape == (40,)
+    assert np.allclose(t.model_force_n - t.force_n, t.residual_n, rtol=0, atol=1e-15)
+
+
+def test_fit_curves_from_a_record_as_the_cli(cli):
+    """read_force_depth_record + fit_curves give the CLI's numbers for the same record."""
+    record = pu.read_force_depth_record(str(DATA / "indentation_record.csv"), contact_depth=2.0)
+    assert record["puncture"] is not None and not record["contact_found"]
+    test = pu.CurveTest(pu.Problem(), record["depth_mm"], record["force_n"],
+                        puncture=record["puncture"])
+    fit = pu.fit_curves([test], ["shear-modulus", "jlim"])
+    rc, out, err = cli.run("fit", "curve", DATA / "indentation_record.csv", "--free",
+                           "shear-modulus,jlim", "--contact-depth", "2", "--format", "json")
+    assert rc == 0, err
+    import json
+    free = json.loads(out)["fit"]["free"]
+    for p, q in zip(fit.parameters, free):
+        assert same(p.value, q["value"]) and same(p.standard_error, q["standard_error"])
+
+
+def test_fit_curves_errors():
+    test = pu.CurveTest(pu.Problem(), [1.0, 2.0, 3.0], [0.1, 0.2, 0.3])
+    with pytest.raises(ValueError, match="unknown parameter 'modulus'"):
+        pu.fit_curves([test], ["modulus"])
+    with pytest.raises(ValueError, match="no test has a puncture point"):
+        pu.fit_curves([test], ["critical-i1"])
+    with pytest.raises(ValueError, match="bad_cell.csv:4: column 2"):
+        pu.read_force_depth_record(str(DATA / "indentation_bad_cell.csv"), contact_depth=0.0)

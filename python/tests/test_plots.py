@@ -129,6 +129,18 @@ def test_cli_plot_curve(tmp_path, cli, suffix):
     (check_png if suffix == ".png" else check_svg)(target)
 
 
+def test_cli_plot_fit_curve(tmp_path, cli):
+    """fit curve --plot: the records, the fitted curves and the residuals, from the fit's JSON."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    record = os.path.join(here, "..", "..", "tests", "cli", "indentation_record.csv")
+    target = tmp_path / "fit.png"
+    rc, out, err = cli.run("fit", "curve", record, "--free", "shear-modulus,jlim",
+                           "--contact-depth", "2", "--plot", target)
+    assert rc == 0, err
+    assert "shear-modulus" in out  # the report is still written
+    check_png(target)
+
+
 def test_cli_plot_state(tmp_path, cli):
     target = tmp_path / "state.png"
     rc, out, err = cli.run("state", "--depth", "20", "--plot", target)
@@ -261,5 +273,5 @@ def test_uniaxial_fit_figure_draws_the_cli_numbers(cli):
 def test_cli_plot_refused_where_nothing_is_drawn(tmp_path, cli):
     rc, _, err = cli.run("calibrate", "friction", "--indenter-radius", "1", "--puncture-force",
                          "1.72", "--hole-ratio", "1.58", "--plot", tmp_path / "f.png")
-    assert rc == 1 and "--plot: draws 'fit uniaxial', 'calibrate band' and 'calibrate jlim'" in err
+    assert rc == 1 and "--plot: draws 'fit uniaxial', 'fit curve', 'calibrate band' and 'calibrate jlim'" in err
     assert not (tmp_path / "f.png").exists()

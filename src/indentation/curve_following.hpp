@@ -146,9 +146,13 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     out.points.push_back(pt);
     return true;
   };
-  const int n = curve.points;
+  const bool given = !curve.depths_mm.empty();
+  const int n = given ? static_cast<int>(curve.depths_mm.size()) : curve.points;
   // The last depth is end_depth itself (end_depth * (n - 1) / (n - 1) may miss it by an ulp).
-  auto grid = [&](int k) { return k == n - 1 ? end_depth : end_depth * k / (n - 1); };
+  auto grid = [&](int k) {
+    if (given) return curve.depths_mm[static_cast<std::size_t>(k)];
+    return k == n - 1 ? end_depth : end_depth * k / (n - 1);
+  };
   for (int k = 0; k < n; ++k) {
     const double depth = grid(k);
     const double prev_depth = k == 0 ? -1.0 : grid(k - 1);
@@ -184,7 +188,7 @@ LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
   }
   bool puncture_at_switch = false;
   out.puncture = find_puncture(p, options, shooting, switch_point, puncture_at_switch);
-  double end_depth = curve.max_depth_mm;
+  double end_depth = curve.depths_mm.empty() ? curve.max_depth_mm : curve.depths_mm.back();
   if (end_depth <= 0.0) {
     if (!out.puncture.ok()) {
       // The puncture's own failure: physical when the membrane has no puncture point.

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "indentation/curve_following.hpp"
 #include "indentation/dispatch.hpp"
 #include "indentation/puncture_search.hpp"
@@ -47,6 +49,15 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
   if (curve.points < 2)
     throw InvalidInput("points",
                        fmt::format("the curve needs at least 2 points, got {}", curve.points));
+  for (std::size_t i = 0; i < curve.depths_mm.size(); ++i) {
+    const double d = curve.depths_mm[i];
+    if (!std::isfinite(d) || d <= 0.0 || (i > 0 && !(d > curve.depths_mm[i - 1])))
+      throw InvalidInput("depths_mm",
+                         fmt::format("the curve's depths must be finite, > 0 mm and strictly "
+                                     "increasing; depth {} is {} mm",
+                                     i + 1,
+                                     d));
+  }
   return detail::reporting_failures<LoadingCurve>([&] {
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       return detail::curve_to_puncture(p, shooting, curve, options);

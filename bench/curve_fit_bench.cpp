@@ -1,0 +1,86 @@
+// Speed of the force-depth fit (curve_fit.hpp) against the loading curve it repeats:
+//   BM_LoadingCurveAtRecordDepths  one loading curve at a record's 200 depths (the unit of work)
+//   BM_FitCurveThreeParameters     G, J_lim and friction fitted to one 200-point record from a
+//                                  start 15-30 % off (the target: <= 2 s on one core)
+//   BM_FitCurveFourTests           the same three jointly to four records (target <= 5 s)
+// The records are the model's with known parameters plus seeded noise (0.5 % of the largest
+// force), as in tests/calibration/curve_fit_test.cpp.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+
+#include "puncture/curve_fit.hpp"
+#include "puncture/loading_curve.hpp"
+
+namespace {
+
+using namespace puncture;
+
+CurveTest record(const Problem& truth, unsigned seed) {
+  const auto p = predict_puncture(truth);
+  CurveTest t;
+  t.name = "record";
+  t.problem = truth;
+  for (int i = 1; i <= 200; ++i) t.depth_mm.push_back(0.95 * p.depth_mm * i / 200);
+  CurveOptions c;
+  c.depths_mm = t.depth_mm;
+  const auto curve = loading_curve(truth, c);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, 0.005 * curve.points.back().force_n);
+  for (const auto& pt : curve.points) t.force_n.push_back(pt.force_n + noise(rng));
+  // The fit's start, off the truth.
+  t.problem.material.shear_modulus_mpa *= 1.2;
+  std::get<Gent>(t.problem.material.law).j_lim *= 1.3;
+  t.problem.friction *= 1.15;
+  return t;
+}
+
+CurveFitOptions three_free() {
+  CurveFitOptions o;
+  o.free = {CurveParameter::ShearModulus, CurveParameter::JLim, CurveParameter::Friction};
+  return o;
+}
+
+void BM_LoadingCurveAtRecordDepths(benchmark::State& state) {
+  const auto t = record(Problem{}, 1);
+  CurveOptions c;
+  c.depths_mm = t.depth_mm;
+  for (auto _ : state) benchmark::DoNotOptimize(loading_curve(Problem{}, c));
+}
+BENCHMARK(BM_LoadingCurveAtRecordDepths)->Unit(benchmark::kMillisecond);
+
+// Argument: -log10 of the function tolerance (8, the default; 10, tighter).
+void BM_FitCurveThreeParameters(benchmark::State& state) {
+  const CurveFitProblem problem{{record(Problem{}, 1)}};
+  auto options = three_free();
+  options.function_tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  int curves = 0;
+  for (auto _ : state) {
+    const auto fit = fit_curves(problem, options);
+    curves = fit.curve_evaluations;
+    benchmark::DoNotOptimize(fit);
+  }
+  state.counters["curves"] = curves;
+}
+BENCHMARK(BM_FitCurveThreeParameters)->Arg(8)->Arg(10)->Unit(benchmark::kMillisecond);
+
+void BM_FitCurveFourTests(benchmark::State& state) {
+  CurveFitProblem problem;
+  for (int k = 0; k < 4; ++k) {
+    Problem truth;
+    truth.indenter = FlatPunch{1.0 + 0.5 * k};
+    truth.geometry.thickness_mm = 0.2 + 0.05 * k;
+    problem.tests.push_back(record(truth, static_cast<unsigned>(10 + k)));
+  }
+  int curves = 0;
+  for (auto _ : state) {
+    const auto fit = fit_curves(problem, three_free());
+    curves = fit.curve_evaluations;
+    benchmark::DoNotOptimize(fit);
+  }
+  state.counters["curves"] = curves;
+}
+BENCHMARK(BM_FitCurveFourTests)->Unit(benchmark::kMillisecond);
+
+}  // namespace
