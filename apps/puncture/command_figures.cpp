@@ -36,7 +36,8 @@ constexpr std::array kFig12bRadiusRatio{0.04, 0.08, 0.12};
 constexpr double kFig12RadiusRatio = 0.08;
 constexpr double kFig12NormalizedForce = 1.0;
 constexpr double kFig12bMaxFriction = 2.5;
-constexpr int kFig12bSteps = 250;  // fine enough that the bends where Part II vanishes are drawn, not cut
+constexpr int kFig12bSteps =
+    250;  // fine enough that the bends where Part II vanishes are drawn, not cut
 
 struct Fig13Panel {
   const char* label;

@@ -10,7 +10,8 @@ namespace puncture::cli {
 // CLI11's reader, preceded by a check of every line: a key with an empty value ('friction =',
 // 'friction = ""') or an option written without '= value' (which CLI11 reads as a flag set to
 // true) is a CLI::ConfigError naming the key and the line, so the CLI exits 1 instead of running
-// with the default.  An unknown key is refused with a "did you mean".  Flags (options taking no value) may be written alone.
+// with the default.  An unknown key is refused with a "did you mean".  Flags (options taking no
+// value) may be written alone.
 class StrictConfig : public CLI::ConfigTOML {
  public:
   explicit StrictConfig(const CLI::App& app) : app_(&app) {}

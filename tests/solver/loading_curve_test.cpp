@@ -42,7 +42,8 @@ const std::vector<CurveCase> kCurves = {
     {"MooneyRivlin", paper_problem(MooneyRivlin{0.2})},
     {"Yeoh", paper_problem(Yeoh{0.05, 0.001})},
     // Ogden's (1972) three-term fit to Treloar (mu_p / G), Arruda-Boyce, Gent-Gent
-    {"Ogden", paper_problem(std::get<Ogden>(ogden_material({0.63, 0.0012, -0.01}, {1.3, 5.0, -2.0}).law))},
+    {"Ogden",
+     paper_problem(std::get<Ogden>(ogden_material({0.63, 0.0012, -0.01}, {1.3, 5.0, -2.0}).law))},
     {"ArrudaBoyce", paper_problem(ArrudaBoyce{50.0})},
     {"GentGent", paper_problem(GentGent{125.0, 0.2})},
 };
