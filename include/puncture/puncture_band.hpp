@@ -79,6 +79,9 @@ struct BandParameters {
 // The problem's values of the four parameters: the nominal point of a band.
 BandParameters band_parameters(const Problem& problem);
 
+// `problem` with one of the four parameters set to `value` (J_lim: the Gent law's).
+Problem with_band_parameter(Problem problem, BandParameter parameter, double value);
+
 // One predicted puncture (predict_puncture) at one parameter set.
 struct BandEvaluation : Outcome {  // of predict_puncture at these parameters
   BandParameters parameters;

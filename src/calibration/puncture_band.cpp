@@ -48,6 +48,16 @@ Problem with(Problem q, const BandParameters& b) {
   return q;
 }
 
+}  // namespace
+
+Problem with_band_parameter(Problem problem, BandParameter parameter, double value) {
+  BandParameters b = band_parameters(problem);
+  set(b, parameter, value);
+  return with(problem, b);
+}
+
+namespace {
+
 std::string describe(const BandParameters& b) {
   std::string out =
       fmt::format("critical I1 = {:.6g}, friction mu' = {:.6g}", b.critical_i1, b.friction);

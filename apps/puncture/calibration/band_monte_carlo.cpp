@@ -19,23 +19,6 @@ constexpr BandParameter kParameters[4] = {BandParameter::CriticalI1,
                                           BandParameter::JLim,
                                           BandParameter::ShearModulus};
 
-void set(Problem& p, BandParameter parameter, double value) {
-  switch (parameter) {
-    case BandParameter::CriticalI1:
-      p.critical_i1 = value;
-      break;
-    case BandParameter::Friction:
-      p.friction = value;
-      break;
-    case BandParameter::JLim:
-      std::get<Gent>(p.material.law).j_lim = value;
-      break;
-    case BandParameter::ShearModulus:
-      p.material.shear_modulus_mpa = value;
-      break;
-  }
-}
-
 nlohmann::json statistics_json(const OutputStatistics& s) {
   nlohmann::json j;
   j["found"] = s.found;
@@ -84,7 +67,8 @@ std::string monte_carlo_band_text(const MonteCarloBandRequest& r, Format format)
     throw InputError("calibrate band: every interval has zero width: nothing to sample");
   const auto problem_of = [&](const SweepPoint& point) {
     Problem p = r.problem;
-    for (std::size_t j = 0; j < swept.size(); ++j) set(p, swept[j], point.values[j]);
+    for (std::size_t j = 0; j < swept.size(); ++j)
+      p = with_band_parameter(p, swept[j], point.values[j]);
     return p;
   };
   SweepStatistics force(names, "puncture_force_n"), depth(names, "puncture_depth_mm");
