@@ -1,26 +1,47 @@
 #pragma once
-// When the membrane punctures: a failure criterion, evaluated on a solved state.  A criterion is
-// a struct here and an alternative of FailureCriterion, with its measure in src/failure/.
+// When the membrane punctures: the failure criteria (failure_criteria.hpp) evaluated on a solved
+// state.  A criterion is a struct and an alternative of FailureCriterion, with its measure here
+// and in src/failure/.
 #include <string>
-#include <variant>
+#include <vector>
 
 #include "puncture/equilibrium.hpp"
+#include "puncture/failure_criteria.hpp"
+#include "puncture/material.hpp"
 #include "puncture/problem.hpp"
 
 namespace puncture {
 
-// The paper's criterion (§2.3): the membrane punctures where the first invariant I1 of the
-// right Cauchy-Green tensor first reaches a critical value, measured in the inflation test.
-struct CriticalFirstInvariant {
-  double critical_i1 = 95.2;
-};
-
-using FailureCriterion = std::variant<CriticalFirstInvariant>;
-
-// The problem's criterion (today the critical I1 of Problem::critical_i1).
+// The problem's criteria: Problem::criteria, or the critical I1 of Problem::critical_i1 alone
+// when that list is empty (the paper's).
+std::vector<FailureCriterion> failure_criteria(const Problem& problem);
+// The first of them (the only one unless Problem::criteria lists several).
 FailureCriterion failure_criterion(const Problem& problem);
-// E.g. "critical I1 = 95.2".
+
+// E.g. "critical I1 = 95.2", "maximum principal stretch = 6", "critical strain-energy density
+// = 12.5 MPa", "critical true stress = 30 MPa".
 std::string describe(const FailureCriterion& criterion);
+// The name the CLI (--criterion NAME:VALUE) and Python use: "i1", "max-stretch",
+// "energy-density", "true-stress".
+std::string criterion_name(const FailureCriterion& criterion);
+// The criterion called `name` with critical value `value` (its unit: criterion_unit).  Throws
+// InvalidInput ("criterion") for an unknown name; the value's range is validation_errors()'s.
+FailureCriterion criterion_from_name(const std::string& name, double value);
+// The names, in that order.
+std::vector<std::string> criterion_names();
+// What the measure is ("I1", "largest principal stretch", ...) and its unit ("" or "MPa").
+std::string measure_name(const FailureCriterion& criterion);
+std::string criterion_unit(const FailureCriterion& criterion);
+double critical_value(const FailureCriterion& criterion);
+
+// The criterion's measure at principal stretches lambda1, lambda2 (lambda3 = 1 / (lambda1
+// lambda2)) of `material`: I1, max(lambda1, lambda2, lambda3), W [MPa] or max(lambda_i s_i)
+// [MPa] (i = 1, 2; the thickness direction is free of stress).
+double measure_at(const FailureCriterion& criterion, const Material& material, double l1,
+                  double l2);
+
+// The part in words, e.g. "Part II (on the indenter's side)".
+std::string to_string(MembranePart part);
 
 // A criterion evaluated along every part of a state: its measure where it is largest, the value
 // at which the membrane fails, and where that is.
@@ -34,6 +55,14 @@ struct FailureAssessment {
   bool failed() const { return value >= critical; }
 };
 
-FailureAssessment assess(const FailureCriterion& criterion, const Equilibrium& state);
+// The critical I1 reads the state's largest I1 (found between the integration steps); every
+// other criterion reads the fields (state.fields, sampled at SolverOptions::field_points per
+// part: the largest sampled value; NaN without fields).
+FailureAssessment assess(const FailureCriterion& criterion, const Equilibrium& state,
+                         const Material& material);
+// The largest value of the criterion's measure over the rows of `fields`, and its row (the
+// outermost among equal values); value NaN for empty fields.
+FailureAssessment assess_fields(const FailureCriterion& criterion, const MembraneFields& fields,
+                                const Material& material);
 
 }  // namespace puncture

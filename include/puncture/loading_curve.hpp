@@ -48,6 +48,9 @@ struct PuncturePrediction : Outcome {
   // sliding one at the switch depth, or (stage Stick) the held one when sliding at that depth
   // would stretch it without bound past the criterion (beyond a limit load).
   bool at_switch = false;
+  // The criterion met first (describe(FailureCriterion), e.g. "critical I1 = 95.2"); the crack's
+  // place above is where its measure is largest.
+  std::string criterion;
   Equilibrium state;  // the full state at puncture
 };
 

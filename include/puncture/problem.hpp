@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "puncture/failure_criteria.hpp"
 #include "puncture/indenter.hpp"
 #include "puncture/material.hpp"
 #include "puncture/outcome.hpp"
@@ -59,7 +60,10 @@ struct Problem {
   Material material;
   double friction = 0.18;     // Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)
   double critical_i1 = 95.2;  // I1 at which the membrane punctures (inflation test, §2.3)
-  StickCriterion stick;       // stick -> slip switch rule
+  // The failure criteria (failure_criteria.hpp): empty, the critical I1 above alone; otherwise
+  // these, and the membrane punctures where the first of them is met (critical_i1 is unused).
+  std::vector<FailureCriterion> criteria;
+  StickCriterion stick;  // stick -> slip switch rule
   PartTwoEquation part_two_equation = PartTwoEquation::RingBalance;
 };
 

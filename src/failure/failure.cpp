@@ -2,30 +2,153 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace puncture {
 
+namespace {
+
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
+
+}  // namespace
+
+std::vector<FailureCriterion> failure_criteria(const Problem& problem) {
+  if (!problem.criteria.empty()) return problem.criteria;
+  return {CriticalFirstInvariant{problem.critical_i1}};
+}
+
 FailureCriterion failure_criterion(const Problem& problem) {
-  return CriticalFirstInvariant{problem.critical_i1};
+  return failure_criteria(problem).front();
 }
 
 std::string describe(const FailureCriterion& criterion) {
   return std::visit(
-      [](const CriticalFirstInvariant& c) {
-        return fmt::format("critical I1 = {:g}", c.critical_i1);
+      Overloaded{
+          [](const CriticalFirstInvariant& c) {
+            return fmt::format("critical I1 = {:g}", c.critical_i1);
+          },
+          [](const MaxPrincipalStretch& c) {
+            return fmt::format("maximum principal stretch = {:g}", c.critical_stretch);
+          },
+          [](const CriticalEnergyDensity& c) {
+            return fmt::format("critical strain-energy density = {:g} MPa", c.critical_mpa);
+          },
+          [](const CriticalTrueStress& c) {
+            return fmt::format("critical true stress = {:g} MPa", c.critical_mpa);
+          },
       },
       criterion);
 }
 
-FailureAssessment assess(const FailureCriterion& criterion, const Equilibrium& state) {
-  return std::visit(
-      [&](const CriticalFirstInvariant& c) {
-        return FailureAssessment{state.max_first_invariant,
-                                 c.critical_i1,
-                                 state.max_first_invariant_part,
-                                 state.max_first_invariant_reference_radius_mm,
-                                 state.max_first_invariant_radius_mm};
-      },
-      criterion);
+std::string criterion_name(const FailureCriterion& criterion) {
+  return criterion_names()[criterion.index()];
+}
+
+std::vector<std::string> criterion_names() {
+  return {"i1", "max-stretch", "energy-density", "true-stress"};
+}
+
+FailureCriterion criterion_from_name(const std::string& name, double value) {
+  if (name == "i1") return CriticalFirstInvariant{value};
+  if (name == "max-stretch") return MaxPrincipalStretch{value};
+  if (name == "energy-density") return CriticalEnergyDensity{value};
+  if (name == "true-stress") return CriticalTrueStress{value};
+  throw InvalidInput("criterion",
+                     fmt::format("unknown failure criterion '{}' (one of i1, max-stretch, "
+                                 "energy-density, true-stress)",
+                                 name));
+}
+
+std::string measure_name(const FailureCriterion& criterion) {
+  static const char* const names[] = {
+      "I1", "largest principal stretch", "strain-energy density", "largest principal true stress"};
+  return names[criterion.index()];
+}
+
+std::string criterion_unit(const FailureCriterion& criterion) {
+  return criterion.index() >= 2 ? "MPa" : "";
+}
+
+double critical_value(const FailureCriterion& criterion) {
+  return std::visit(Overloaded{
+                        [](const CriticalFirstInvariant& c) { return c.critical_i1; },
+                        [](const MaxPrincipalStretch& c) { return c.critical_stretch; },
+                        [](const CriticalEnergyDensity& c) { return c.critical_mpa; },
+                        [](const CriticalTrueStress& c) { return c.critical_mpa; },
+                    },
+                    criterion);
+}
+
+double measure_at(const FailureCriterion& criterion, const Material& material, double l1,
+                  double l2) {
+  const double g = material.shear_modulus_mpa;
+  return std::visit(Overloaded{
+                        [&](const CriticalFirstInvariant&) { return first_invariant(l1, l2); },
+                        [&](const MaxPrincipalStretch&) {
+                          return std::max({l1, l2, 1.0 / (l1 * l2)});
+                        },
+                        [&](const CriticalEnergyDensity&) {
+                          return g * strain_energy_density(material.law, l1, l2);
+                        },
+                        [&](const CriticalTrueStress&) {
+                          // sigma_i = t_i / h: the line tension t1 = H s1 / lambda2 over the
+                          // thickness h = H / (lambda1 lambda2) is lambda1 s1 (and t2 / h = lambda2
+                          // s2).
+                          const MembraneStress st = membrane_stress(material.law, l1, l2);
+                          return g * std::max(l1 * st.s1, l2 * st.s2);
+                        },
+                    },
+                    criterion);
+}
+
+std::string to_string(MembranePart part) {
+  switch (part) {
+    case MembranePart::Free:
+      return "Part I (free)";
+    case MembranePart::Side:
+      return "Part II (on the indenter's side)";
+    case MembranePart::Tip:
+      return "Part III (under the indenter's tip)";
+  }
+  return "unknown part";
+}
+
+FailureAssessment assess_fields(const FailureCriterion& criterion, const MembraneFields& fields,
+                                const Material& material) {
+  FailureAssessment a;
+  a.critical = critical_value(criterion);
+  a.value = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const double v =
+        measure_at(criterion, material, fields.radial_stretch[i], fields.hoop_stretch[i]);
+    // ">=": of equal values (the homogeneous Part III) the outermost row, as the largest I1's
+    // place in Part III is its edge.
+    if (std::isnan(a.value) || v >= a.value) {
+      a.value = v;
+      a.part = fields.part[i];
+      a.reference_radius_mm = fields.reference_radius_mm[i];
+      a.radius_mm = fields.radius_mm[i];
+    }
+  }
+  return a;
+}
+
+FailureAssessment assess(const FailureCriterion& criterion, const Equilibrium& state,
+                         const Material& material) {
+  if (const auto* c = std::get_if<CriticalFirstInvariant>(&criterion))
+    return FailureAssessment{state.max_first_invariant,
+                             c->critical_i1,
+                             state.max_first_invariant_part,
+                             state.max_first_invariant_reference_radius_mm,
+                             state.max_first_invariant_radius_mm};
+  return assess_fields(criterion, state.fields, material);
 }
 
 }  // namespace puncture

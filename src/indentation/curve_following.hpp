@@ -57,7 +57,6 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
   const double scale = units.force_n;
   const double big_a = units.length_mm;
   const auto& contact = shooting.contact();
-  const FailureCriterion criterion = failure_criterion(p);
   DepthNewton<Shooting> newton(shooting, curve_tol);
   newton.without_maxima(true);  // only the points' own states need their largest I1
   Predictor predictor;
@@ -142,7 +141,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     pt.part_two_length_mm = sol->part_two_length * big_a;
     pt.corner_slope_rad = sol->corner_slope;
     pt.max_first_invariant = max_first_invariant_of(*sol);
-    pt.beyond_puncture = exceeded(criterion, *sol);
+    pt.beyond_puncture = any_exceeded(p, contact, *sol);
     out.points.push_back(pt);
     return true;
   };

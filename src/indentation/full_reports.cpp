@@ -54,6 +54,35 @@ std::string part_two_text(const LoadingCurve& c, const Problem& p) {
   return *c.part_two_onset_depth_mm > end ? text + ", beyond the end of the curve" : text;
 }
 
+// The problem's criteria in words, "; "-separated.
+std::string criteria_text(const Problem& p) {
+  std::string out;
+  for (const FailureCriterion& c : failure_criteria(p))
+    out += fmt::format("{}{}", out.empty() ? "" : "; ", describe(c));
+  return out;
+}
+
+// Each of Problem::criteria on the state: its measure where largest, there, and the ratio to
+// its critical value.
+void criteria_lines(std::string& out, const Equilibrium& e, const Problem& p) {
+  for (const FailureCriterion& c : p.criteria) {
+    const FailureAssessment a = assess(c, e, p.material);
+    const std::string unit =
+        criterion_unit(c).empty() ? std::string() : fmt::format(" {}", criterion_unit(c));
+    line(out,
+         fmt::format("criterion {}", criterion_name(c)),
+         fmt::format("{}{} in {} at R = {} mm, r = {} mm: ratio {} to the critical {}{}",
+                     num(a.value),
+                     unit,
+                     to_string(a.part),
+                     num(a.reference_radius_mm),
+                     num(a.radius_mm),
+                     num(a.ratio()),
+                     num(a.critical),
+                     unit));
+  }
+}
+
 }  // namespace
 
 std::string full_report(const Problem& p) {
@@ -98,7 +127,10 @@ std::string full_report(const Problem& p) {
   }
   line(out, "material", describe(p.material));
   line(out, "friction mu'", num(p.friction));
-  line(out, "critical I1", num(p.critical_i1));
+  if (p.criteria.empty())
+    line(out, "critical I1", num(p.critical_i1));
+  else
+    line(out, "failure criteria", criteria_text(p));
   line(out, "stick criterion", describe(p.stick));
   line(out, "Part II equation", to_string(p.part_two_equation));
   line(out, "force scale 2 pi G H A", num(force_scale_n(p)) + " N (normalised force = F / this)");
@@ -113,7 +145,7 @@ std::string full_report(const Equilibrium& e, const Problem& p) {
          "BEYOND PUNCTURE",
          fmt::format("the criterion ({}) is exceeded: loaded to this state the membrane would "
                      "already have punctured",
-                     describe(failure_criterion(p))));
+                     criteria_text(p)));
   line(out, "configuration", to_string(e.configuration));
   line(out,
        "force",
@@ -136,13 +168,22 @@ std::string full_report(const Equilibrium& e, const Problem& p) {
        "corner tension ratio",
        std::isinf(e.corner_tension_ratio) ? "n/a (the membrane is held at the edge)"
                                           : num(e.corner_tension_ratio));
-  line(out,
-       "largest I1",
-       fmt::format("{} at reference R = {} mm ({} the critical {})",
-                   num(e.max_first_invariant),
-                   num(e.max_first_invariant_reference_radius_mm),
-                   e.max_first_invariant >= p.critical_i1 ? "at or beyond" : "below",
-                   num(p.critical_i1)));
+  if (p.criteria.empty())
+    line(out,
+         "largest I1",
+         fmt::format("{} at reference R = {} mm ({} the critical {})",
+                     num(e.max_first_invariant),
+                     num(e.max_first_invariant_reference_radius_mm),
+                     e.max_first_invariant >= p.critical_i1 ? "at or beyond" : "below",
+                     num(p.critical_i1)));
+  else {
+    line(out,
+         "largest I1",
+         fmt::format("{} at reference R = {} mm",
+                     num(e.max_first_invariant),
+                     num(e.max_first_invariant_reference_radius_mm)));
+    criteria_lines(out, e, p);
+  }
   line(out,
        "clamp residual",
        std::isfinite(e.clamp_residual) ? fmt::format("{:.3g}", e.clamp_residual) : "n/a");

@@ -5,11 +5,11 @@
 
 #include <cmath>
 
-#include "failure/criterion.hpp"
 #include "indentation/contact/contact_model.hpp"
-#include "indentation/membrane_fields.hpp"
+#include "indentation/criterion_on_state.hpp"
 #include "indentation/scaled_solution.hpp"
 #include "indentation/solver_scales.hpp"
+#include "indentation/state_fields.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/problem.hpp"
 
@@ -41,7 +41,7 @@ Equilibrium to_physical(const Problem& p, const Contact& contact, const ScaledSo
   e.max_first_invariant_part = largest.part;
   e.clamp_residual = std::abs(sol.residual);
   e.shooting_evaluations = sol.evaluations;
-  e.beyond_puncture = exceeded(failure_criterion(p), sol);
+  e.beyond_puncture = any_exceeded(p, contact, sol);
   if (sol.status == Status::Wrinkles)
     e.message = fmt::format(
         "the hoop stress turns compressive at reference radius R = {:.6g} mm (current radius r "
@@ -58,18 +58,7 @@ Equilibrium to_physical(const Problem& p, const Contact& contact, const ScaledSo
         e.force_n,
         e.max_first_invariant,
         sol.message);
-  if (options.record_fields && sol.ok()) {
-    const FieldScales scales{big_a, p.material.shear_modulus_mpa, p.geometry.thickness_mm};
-    // Before contact under a gas pressure the whole membrane is the inflated dome, free.
-    const bool dome = sol.configuration == Configuration::Unloaded && p.preload.pressure_mpa > 0.0;
-    if (!dome) contact.append_contact_fields(sol, scales, e.fields);
-    append_free_fields(contact.law(),
-                       sol,
-                       dome ? 0.0 : contact.free_part_inner_height(sol),
-                       scales,
-                       e.fields,
-                       dome_pressure(p));
-  }
+  if (options.record_fields && sol.ok()) append_state_fields(p, contact, sol, e.fields);
   return e;
 }
 

@@ -10,6 +10,7 @@
 
 #include "mechanics/falling_stress.hpp"
 #include "mechanics/membrane_validation.hpp"
+#include "puncture/failure.hpp"
 #include "puncture/membrane_stress.hpp"
 
 namespace puncture {
@@ -155,6 +156,75 @@ void append_critical_i1_errors(std::vector<ValidationError>& errors, double crit
   }
 }
 
+// The criteria of Problem::criteria: each critical value in its range and reachable below the
+// law's locking limit, and not already met by the pre-stretched membrane as it is mounted.
+void append_criteria_errors(std::vector<ValidationError>& errors, const Problem& p) {
+  const double i1_lock = locking_first_invariant(p.material.law);
+  const auto [law_name, formula] = locking_limit_words(p.material.law);
+  for (const FailureCriterion& c : p.criteria) {
+    const double v = critical_value(c);
+    const std::string what = fmt::format("{} criterion", criterion_name(c));
+    if (std::holds_alternative<CriticalFirstInvariant>(c)) {
+      if (!std::isfinite(v) || v <= 3.0) {
+        errors.push_back(
+            {"criteria",
+             fmt::format("{}: critical I1 must be a finite number > 3, got {}", what, v)});
+        continue;
+      }
+      if (v >= i1_lock) {
+        errors.push_back({"criteria",
+                          fmt::format("{}: critical I1 must be below the {} locking limit {} = "
+                                      "{:g}, got {:g}",
+                                      what,
+                                      law_name,
+                                      formula,
+                                      i1_lock,
+                                      v)});
+        continue;
+      }
+    } else if (std::holds_alternative<MaxPrincipalStretch>(c)) {
+      if (!std::isfinite(v) || v <= 1.0) {
+        errors.push_back(
+            {"criteria",
+             fmt::format("{}: critical stretch must be a finite number > 1, got {}", what, v)});
+        continue;
+      }
+      // The least I1 at which a principal stretch reaches v is the uniaxial v^2 + 2 / v.
+      if (const double i1 = v * v + 2.0 / v; i1 >= i1_lock) {
+        errors.push_back({"criteria",
+                          fmt::format("{}: a principal stretch of {:g} needs I1 >= {:.6g}, beyond "
+                                      "the {} locking limit {} = {:g}",
+                                      what,
+                                      v,
+                                      i1,
+                                      law_name,
+                                      formula,
+                                      i1_lock)});
+        continue;
+      }
+    } else if (!std::isfinite(v) || v <= 0.0) {
+      errors.push_back(
+          {"criteria",
+           fmt::format("{}: critical value must be a finite number > 0 MPa, got {}", what, v)});
+      continue;
+    }
+    const double l0 = p.preload.prestretch;
+    if (std::isfinite(l0) && l0 > 1.0 && first_invariant(l0, l0) < i1_lock) {
+      const double at_mount = measure_at(c, p.material, l0, l0);
+      if (at_mount >= v)
+        errors.push_back({"preload.prestretch",
+                          fmt::format("pre-stretch {:g} gives a {} of {:.6g} before it is loaded, "
+                                      "at or above the {} criterion's {:g}: the membrane would "
+                                      "fail as it is mounted",
+                                      l0,
+                                      measure_name(c),
+                                      at_mount,
+                                      criterion_name(c),
+                                      v)});
+    }
+  }
+}
+
 void append_prestretch_errors(std::vector<ValidationError>& errors, const char* parameter,
                               double prestretch, double critical_i1) {
   const double l0 = prestretch;
@@ -208,9 +278,15 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
              "friction coefficient must be <= 10 (beyond, the sliding under the tip is below "
              "double precision; use --stick always for a fully held membrane), got {}",
              p.friction)});
-  detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
-  detail::append_prestretch_errors(
-      errors, "preload.prestretch", p.preload.prestretch, p.critical_i1);
+  if (p.criteria.empty()) {
+    detail::append_critical_i1_errors(errors, p.critical_i1, p.material.law);
+    detail::append_prestretch_errors(
+        errors, "preload.prestretch", p.preload.prestretch, p.critical_i1);
+  } else {
+    detail::append_criteria_errors(errors, p);
+    detail::append_prestretch_errors(
+        errors, "preload.prestretch", p.preload.prestretch, std::nan(""));
+  }
   if (const double pressure = p.preload.pressure_mpa; !std::isfinite(pressure) || pressure < 0.0)
     errors.push_back(
         {"preload.pressure_mpa",

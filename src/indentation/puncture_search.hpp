@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "failure/criterion.hpp"
+#include "indentation/criterion_on_state.hpp"
 #include "indentation/physical_state.hpp"
 #include "indentation/scaled_problem.hpp"
 #include "numerics/shooting.hpp"
@@ -101,20 +102,25 @@ SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
   return out;
 }
 
-// The puncture point, given the problem's stick -> slip switch (locate_switch with the same
-// options); `at_switch` tells whether it is the sliding state at the switch (the jump to
-// sliding already reaches the critical I1).
+// The puncture point of one criterion, given the problem's stick -> slip switch (locate_switch
+// with the same options); `at_switch` tells whether it is the sliding state at the switch (the
+// jump to sliding already reaches the criterion).
 // The searches use `shooting`; the state at puncture is made physical with `options` (fields).
 template <class Shooting>
-PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
-                                 const Shooting& shooting, const SwitchPoint& switch_point,
-                                 bool& at_switch) {
+PuncturePrediction find_puncture_by(const Problem& p, const SolverOptions& options,
+                                    const Shooting& shooting, const SwitchPoint& switch_point,
+                                    const FailureCriterion& criterion, bool& at_switch) {
   at_switch = false;
   PuncturePrediction out;
+  out.criterion = describe(criterion);
   const SolverScales units = solver_scales(p);
   const double scale = units.force_n;
   const double big_a = units.length_mm;
-  const FailureCriterion criterion = failure_criterion(p);
+  const auto& contact = shooting.contact();
+  // The criteria but the critical I1 read the sampled fields: every state searched is recorded
+  // (the shooting's solve() samples by default).
+  auto excess = [&](const ScaledSolution& s) { return criterion_excess(p, contact, criterion, s); };
+  auto measure = [&](const ScaledSolution& s) { return excess(s) + critical_value(criterion); };
   const StageBoundary& boundary = switch_point.boundary;
   if (!boundary.ok()) {
     out.status = boundary.status;
@@ -122,7 +128,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
     return out;
   }
   // The criterion's excess grows along the loading path; its first zero is the puncture.
-  auto over_critical = [&](const ScaledSolution& s) { return excess(criterion, s); };
+  auto over_critical = [&](const ScaledSolution& s) { return excess(s); };
   std::optional<double> f_puncture;
   // Set when the membrane punctures as it starts sliding although no sliding state at the switch
   // is reached: the depth at which the sliding membrane reaches the criterion.
@@ -156,7 +162,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
                 shooting, Stage::Slip, 0.0, unloaded_excess(criterion), over_critical)) {
           const auto at = shooting.solve(Stage::Slip, *f_slip);
           if (at.ok() && at.depth <= boundary.depth_mm / big_a &&
-              excess(criterion, at) >= -1e-6 * critical_value(criterion)) {
+              excess(at) >= -1e-6 * critical_value(criterion)) {
             f_puncture = f_switch;
             stage = Stage::Stick;
             at_switch = true;
@@ -228,8 +234,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   // the critical one to ~1e-8 relative (the corner solve's tolerance; the path search brackets
   // the force to a few ulps): 1e-6 relative leaves a margin.
   const double critical = critical_value(criterion);
-  if (const double reached = measure(criterion, sol);
-      !at_switch && reached < critical * (1.0 - 1e-6)) {
+  if (const double reached = measure(sol); !at_switch && reached < critical * (1.0 - 1e-6)) {
     const auto beyond = shooting.solve(stage, *f_puncture * (1.0 + 1e-9));
     out.status = Status::NotReached;
     out.message = fmt::format(
@@ -248,8 +253,7 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   // root beyond a limit load) found no state reaching it continuously.  1e-3: near a limit load
   // the measure is steep in the force and a true root may overshoot by ~1e-5, while the jumps
   // met were 20 % and more.
-  if (const double reached = measure(criterion, sol);
-      !at_switch && reached > critical * (1.0 + 1e-3)) {
+  if (const double reached = measure(sol); !at_switch && reached > critical * (1.0 + 1e-3)) {
     out.message = fmt::format(
         "the puncture search closed on a jump of the largest {} to {:.6g} (critical {:g}) at "
         "{:.6g} N: no state reaches the critical value continuously there",
@@ -267,8 +271,13 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
   out.stage = stage;
   out.configuration = sol.configuration;
   out.part_three_stretch = sol.part_three_stretch;
-  out.crack_reference_radius_mm = out.state.max_first_invariant_reference_radius_mm;
-  out.crack_location = shooting.contact().crack_location(sol);
+  const FailureAssessment crack = assess_scaled(p, contact, criterion, sol);
+  out.crack_reference_radius_mm = crack.reference_radius_mm;
+  out.crack_location =
+      std::holds_alternative<CriticalFirstInvariant>(criterion)
+          ? contact.crack_location(sol)
+          : fmt::format(
+                "where the {} is largest: {}", measure_name(criterion), to_string(crack.part));
   out.at_switch = at_switch;
   if (sliding_criterion_depth_mm)
     out.crack_location = fmt::format(
@@ -279,8 +288,35 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
         *sliding_criterion_depth_mm);
   else if (at_switch)
     out.crack_location += " (at the stick -> slip switch)";
-  out.crack_radius_mm = out.state.max_first_invariant_radius_mm;
+  out.crack_radius_mm = crack.radius_mm;
   return out;
+}
+
+// Whether puncture `a` comes before `b` along the loading path: the held stage first, then the
+// shallower depth.
+inline bool punctures_earlier(const PuncturePrediction& a, const PuncturePrediction& b) {
+  if (a.stage != b.stage) return a.stage == Stage::Stick;
+  return a.depth_mm < b.depth_mm;
+}
+
+// The puncture point: the first of the problem's criteria met along the loading path (each
+// searched on its own; of those not found, the first criterion's failure when none is).
+template <class Shooting>
+PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
+                                 const Shooting& shooting, const SwitchPoint& switch_point,
+                                 bool& at_switch) {
+  const auto criteria = failure_criteria(p);
+  PuncturePrediction first =
+      find_puncture_by(p, options, shooting, switch_point, criteria[0], at_switch);
+  for (std::size_t k = 1; k < criteria.size(); ++k) {
+    bool switch_k = false;
+    auto other = find_puncture_by(p, options, shooting, switch_point, criteria[k], switch_k);
+    if (other.ok() && (!first.ok() || punctures_earlier(other, first))) {
+      first = std::move(other);
+      at_switch = switch_k;
+    }
+  }
+  return first;
 }
 
 }  // namespace puncture::detail

@@ -39,7 +39,7 @@ TEST_P(CriticalI1AtPuncture, HasJustFailedWhereTheFieldsPeak) {
 
   const FailureCriterion criterion = failure_criterion(p);
   EXPECT_EQ(describe(criterion), "critical I1 = 95.2");
-  const FailureAssessment a = assess(criterion, puncture.state);
+  const FailureAssessment a = assess(criterion, puncture.state, p.material);
   // The puncture search brackets the force to a few ulps and meets the clamp condition to 1e-10:
   // the largest I1 equals the critical one to ~1e-8 (model.md, "Puncture"); 1e-6 is its check.
   EXPECT_NEAR(a.ratio(), 1.0, 1e-6);
@@ -60,7 +60,7 @@ TEST_P(CriticalI1AtPuncture, HasJustFailedWhereTheFieldsPeak) {
   // Below the puncture force the membrane has not failed.
   const auto below = solve_at_force(p, 0.9 * puncture.force_n, puncture.stage);
   ASSERT_TRUE(below.ok()) << below.message;
-  EXPECT_FALSE(assess(criterion, below).failed());
+  EXPECT_FALSE(assess(criterion, below, p.material).failed());
 }
 
 INSTANTIATE_TEST_SUITE_P(
