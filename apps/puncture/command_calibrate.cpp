@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "calibration/band_monte_carlo.hpp"
+#include "calibration/critical_value_output.hpp"
 #include "calibration_output.hpp"
 #include "cli_error.hpp"
 #include "parameter_flags.hpp"
@@ -91,6 +92,22 @@ std::string run_critical_i1(const CLI::App& app, const ProblemFlags& pf, const C
             *mark));
       report.tests.push_back({*mark, r});
     }
+  }
+  if (f.measure != "i1") {
+    CriticalValueReport value{report.source, report.tests, {}, f.pole_only, {}};
+    try {
+      // The membrane's law and G (Ogden's G from its terms).
+      const MaterialLaw law = make_law(pf);
+      value.material = std::holds_alternative<Ogden>(law)
+                           ? ogden_material(pf.ogden_mu_mpa, pf.ogden_alpha)
+                           : Material{pf.shear_modulus_mpa, law};
+      value.estimate = critical_value_from_inflation(
+          value.tests, criterion_from_name(f.measure, 0.0), value.material, f.pole_only);
+    } catch (const std::invalid_argument& e) {
+      rethrow_as_input(e);
+    }
+    if (!value.estimate.ok()) throw SolveError(value.estimate.message, value.estimate.status);
+    return calibration_text(value, format);
   }
   try {
     if (!f.pole_only) report.law = make_law(pf);
@@ -394,6 +411,17 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
                  "The paper's estimate: I1 at the pole, 2 lambda^2 + lambda^-4, whatever\n"
                  "the law (no membrane is solved)")
       ->group("Inflation tests");
+  f.critical_i1
+      ->add_option("--measure",
+                   f.measure,
+                   "The criterion (--criterion) whose critical value the tests give:\n"
+                   "i1, max-stretch [dimensionless], energy-density [MPa] or\n"
+                   "true-stress [MPa], each the largest over the burst membrane (with\n"
+                   "--pole-only the pole's: lambda, W(lambda, lambda), lambda s(lambda));\n"
+                   "energy and stress depend on --shear-modulus and the law")
+      ->check(CLI::IsMember(criterion_names()))
+      ->group("Inflation tests")
+      ->capture_default_str();
 
   f.friction = f.calibrate->add_subcommand(
       "friction",

@@ -22,7 +22,8 @@ struct CalibrationFlags {
   double mark_radius_mm = 0.0;
   std::vector<double> burst_radii_mm;
   std::string burst_data;
-  bool pole_only = false;  // the paper's estimate: I1 at the pole, without the membrane's law
+  bool pole_only = false;      // the paper's estimate: I1 at the pole, without the membrane's law
+  std::string measure = "i1";  // --measure: the criterion whose critical value is calibrated
   CLI::Option* mark_radius_option = nullptr;
 
   // calibrate friction, calibrate jlim

@@ -2,6 +2,7 @@
 
 #include "finite.hpp"
 #include "puncture/equilibrium.hpp"
+#include "puncture/failure.hpp"
 #include "puncture/material.hpp"
 #include "stick_spec.hpp"
 
@@ -77,7 +78,16 @@ json problem_json(const Problem& p, std::string_view calibrated) {
               {"prestretch", finite(p.preload.prestretch, "pre-stretch")},
               {"material", material_json(p.material, calibrated != "jlim")}};
   if (calibrated != "friction") out["friction"] = finite(p.friction, "friction");
-  out["critical_i1"] = finite(p.critical_i1, "critical I1");
+  if (p.criteria.empty())
+    out["critical_i1"] = finite(p.critical_i1, "critical I1");
+  else {
+    json criteria = json::array();
+    for (const FailureCriterion& c : p.criteria)
+      criteria.push_back({{"name", criterion_name(c)},
+                          {"critical", finite(critical_value(c), "critical value")},
+                          {"unit", criterion_unit(c)}});
+    out["criteria"] = criteria;
+  }
   out["stick"] = stick_json(p.stick);
   out["part_two_equation"] = to_string(p.part_two_equation);
   if (p.preload.pressure_mpa > 0.0)

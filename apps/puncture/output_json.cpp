@@ -4,6 +4,7 @@
 #include "json_helpers.hpp"
 #include "output.hpp"
 #include "puncture/equilibrium.hpp"
+#include "puncture/failure.hpp"
 #include "puncture/material.hpp"
 #include "tables.hpp"
 
@@ -17,10 +18,29 @@ json inputs_json(const Problem& p) {
   return out;
 }
 
-json puncture_json(const PuncturePrediction& p) {
+json puncture_json(const PuncturePrediction& p, const Problem& problem) {
   if (!p.ok()) return {{"found", false}, {"message", p.message}};
   json out = rows_json(puncture_table(p)).at(0);
   out["found"] = true;
+  if (!problem.criteria.empty()) out["criterion"] = p.criterion;
+  return out;
+}
+
+// Each of the problem's --criterion on the state: measure where largest, place, ratio.
+json criteria_json(const Equilibrium& e, const Problem& p) {
+  json out = json::array();
+  for (const FailureCriterion& c : p.criteria) {
+    const FailureAssessment a = assess(c, e, p.material);
+    out.push_back({{"name", criterion_name(c)},
+                   {"measure", measure_name(c)},
+                   {"unit", criterion_unit(c)},
+                   {"value", finite(a.value, "criterion measure")},
+                   {"critical", finite(a.critical, "critical value")},
+                   {"ratio", finite(a.ratio(), "ratio to the critical value")},
+                   {"part", static_cast<int>(a.part)},
+                   {"reference_radius_mm", finite(a.reference_radius_mm, "criterion's R")},
+                   {"radius_mm", finite(a.radius_mm, "criterion's r")}});
+  }
   return out;
 }
 
@@ -81,15 +101,16 @@ json curve_json(const CurveReport& r) {
 std::string json_text(const CurveReport& r) {
   return dump({{"inputs", inputs_json(r.problem)},
                {"curve", curve_json(r)},
-               {"puncture", puncture_json(r.curve.puncture)}});
+               {"puncture", puncture_json(r.curve.puncture, r.problem)}});
 }
 
 std::string json_text(const StateReport& r) {
   json request = {{"stage", to_string(r.state.stage)}, {"stage_choice", r.stage_choice}};
   if (r.requested_force_n) request["force_n"] = finite(*r.requested_force_n, "requested force");
   if (r.requested_depth_mm) request["depth_mm"] = finite(*r.requested_depth_mm, "requested depth");
-  return dump(
-      {{"inputs", inputs_json(r.problem)}, {"request", request}, {"state", state_json(r.state)}});
+  json state = state_json(r.state);
+  if (!r.problem.criteria.empty()) state["criteria"] = criteria_json(r.state, r.problem);
+  return dump({{"inputs", inputs_json(r.problem)}, {"request", request}, {"state", state}});
 }
 
 std::string json_text(const VerifyReport& r) {
@@ -121,7 +142,8 @@ std::string json_text(const VerifyReport& r) {
 }
 
 std::string json_text(const PunctureReport& r) {
-  return dump({{"inputs", inputs_json(r.problem)}, {"puncture", puncture_json(r.puncture)}});
+  return dump(
+      {{"inputs", inputs_json(r.problem)}, {"puncture", puncture_json(r.puncture, r.problem)}});
 }
 
 }  // namespace puncture::cli

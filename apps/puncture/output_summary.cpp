@@ -82,6 +82,9 @@ std::string summary_text(const VerifyReport& r) {
 std::string summary_text(const PunctureReport& r) {
   std::string out = full_report(r.problem);
   out += full_report(r.puncture);
+  // With --criterion: which of them the membrane meets first.
+  if (!r.problem.criteria.empty() && r.puncture.ok())
+    out += fmt::format("  {:<24}{}\n", "criterion met first", r.puncture.criterion);
   return out;
 }
 

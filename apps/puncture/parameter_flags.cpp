@@ -12,7 +12,7 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 31> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 32> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
@@ -31,6 +31,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 31> kFlagOfP
     {"material.law.beta", "--i2-share"},
     {"friction", "--friction"},
     {"critical_i1", "--critical-i1"},
+    {"criteria", "--criterion"},
     {"stick.threshold", "--stick"},
     {"stick.rule", "--stick"},
     {"indenter", "--indenter"},

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli_error.hpp"
+#include "criterion_spec.hpp"
 #include "parameter_flags.hpp"
 #include "stick_spec.hpp"
 
@@ -250,13 +251,32 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                  "[dimensionless] (>= 0; 0.18 lubricated, 1.95 dry)")
       ->group(kContact)
       ->capture_default_str();
-  app.add_option("--critical-i1",
-                 f.critical_i1,
-                 "First strain invariant I1 at which the membrane punctures\n"
-                 "[dimensionless] (> 3; < 3 + J_lim for gent and gent-gent, < 3 N\n"
-                 "for arruda-boyce)")
-      ->group(kContact)
-      ->capture_default_str();
+  f.critical_i1_option =
+      app.add_option("--critical-i1",
+                     f.critical_i1,
+                     "First strain invariant I1 at which the membrane punctures\n"
+                     "[dimensionless] (> 3; < 3 + J_lim for gent and gent-gent, < 3 N\n"
+                     "for arruda-boyce)")
+          ->group(kContact)
+          ->capture_default_str();
+  app.add_option("--criterion",
+                 f.criteria,
+                 "Failure criteria NAME:VALUE instead of --critical-i1 (repeat the flag\n"
+                 "or separate with commas); the membrane punctures where the first of\n"
+                 "them is met, each at the place its measure is largest:\n"
+                 "  i1:<I1>           first invariant I1 of C [dimensionless] (> 3),\n"
+                 "                    the paper's (inflation test)\n"
+                 "  max-stretch:<l>   largest principal stretch [dimensionless] (> 1;\n"
+                 "                    Nguyen & Vu-Khanh 2004, Deris & Nadler 2015)\n"
+                 "  energy-density:<MPa>\n"
+                 "                    strain-energy density W per reference volume\n"
+                 "                    [MPa = MJ/m^3] (> 0)\n"
+                 "  true-stress:<MPa> largest principal Cauchy stress lambda_i s_i\n"
+                 "                    [MPa] (> 0)\n"
+                 "Each must be reachable below the law's locking limit.  Default: the\n"
+                 "critical I1 of --critical-i1, e.g. --criterion i1:95.2,max-stretch:6")
+      ->delimiter(',')
+      ->group(kContact);
   app.add_option("--stick",
                  f.stick,
                  "When the membrane, held at the indenter's edge at first, starts to\n"
@@ -299,6 +319,12 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   p.material = material_of(f, errors);
   p.friction = f.friction;
   p.critical_i1 = f.critical_i1;
+  if (!f.criteria.empty()) {
+    if (given(f.critical_i1_option))
+      errors.push_back(
+          "--critical-i1: with --criterion give the critical I1 as --criterion i1:<I1>");
+    p.criteria = parse_criteria(f.criteria, errors);
+  }
   p.part_two_equation = f.part_two_equation == "paper-eq18" ? PartTwoEquation::PaperEq18
                                                             : PartTwoEquation::RingBalance;
   if (const auto stick = parse_stick(f.stick))
@@ -363,6 +389,10 @@ InflationProblem make_inflation_problem(const ProblemFlags& f) {
   p.thickness_mm = f.thickness_mm;
   p.material = material_of(f, errors);
   p.critical_i1 = f.critical_i1;
+  if (!f.criteria.empty())
+    errors.push_back(
+        "--criterion: the inflation bursts at --critical-i1; the other criteria apply to "
+        "indentation (their critical values from bursts: calibrate critical-i1 --measure)");
   p.prestretch = f.prestretch;
   const auto validation = with_law_flags(validation_errors(p), f, errors);
   throw_if_invalid("invalid input:", errors, validation);

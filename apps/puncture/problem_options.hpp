@@ -30,6 +30,7 @@ struct ProblemFlags {
   double gent_gent_beta = GentGent{}.beta;
   double friction = defaults.friction;
   double critical_i1 = defaults.critical_i1;
+  std::vector<std::string> criteria;  // --criterion NAME:VALUE items (criterion_spec.hpp)
   std::string stick = "none";
   std::string part_two_equation = "ring-balance";
   CLI::Option* j_lim_option = nullptr;
@@ -43,6 +44,7 @@ struct ProblemFlags {
   CLI::Option* gent_gent_beta_option = nullptr;
   CLI::Option* prestretch_option = nullptr;
   CLI::Option* pressure_option = nullptr;
+  CLI::Option* critical_i1_option = nullptr;
 };
 
 // Registers the flags on `app` (with units and allowed values in their help).
