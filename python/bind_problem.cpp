@@ -491,15 +491,19 @@ void bind_problem(py::module_& m) {
                        double critical_i1,
                        const std::variant<StickCriterion, std::string>& stick,
                        const std::variant<PartTwoEquation, std::string>& equation,
-                       const Preload& preload) {
-             return Problem{g,
-                            preload,
-                            indenter,
-                            mat,
-                            friction,
-                            critical_i1,
-                            stick_of(stick),
-                            part_two_equation_of(equation)};
+                       const Preload& preload,
+                       const std::vector<FailureCriterion>& criteria) {
+             Problem p;
+             p.geometry = g;
+             p.preload = preload;
+             p.indenter = indenter;
+             p.material = mat;
+             p.friction = friction;
+             p.critical_i1 = critical_i1;
+             p.criteria = criteria;
+             p.stick = stick_of(stick);
+             p.part_two_equation = part_two_equation_of(equation);
+             return p;
            }),
            py::arg("geometry") = defaults.geometry,
            py::arg("indenter") = defaults.indenter,
@@ -508,7 +512,8 @@ void bind_problem(py::module_& m) {
            py::arg("critical_i1") = defaults.critical_i1,
            py::arg("stick") = defaults.stick,
            py::arg("part_two_equation") = defaults.part_two_equation,
-           py::arg("preload") = defaults.preload)
+           py::arg("preload") = defaults.preload,
+           py::arg("criteria") = std::vector<FailureCriterion>{})
       .def_readwrite("geometry", &Problem::geometry)
       .def_readwrite("preload", &Problem::preload, "the pre-stretch before indentation (Preload)")
       .def_readwrite("indenter", &Problem::indenter, "the probe (FlatPunch or SphereTipped)")
@@ -516,6 +521,11 @@ void bind_problem(py::module_& m) {
       .def_readwrite(
           "friction", &Problem::friction, "Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)")
       .def_readwrite("critical_i1", &Problem::critical_i1, "I1 at which the membrane punctures")
+      .def_readwrite("criteria",
+                     &Problem::criteria,
+                     "failure criteria (CriticalFirstInvariant, MaxPrincipalStretch,\n"
+                     "CriticalEnergyDensity, CriticalTrueStress); empty: critical_i1 alone,\n"
+                     "else the first met governs")
       .def_property(
           "stick",
           [](Problem& p) -> StickCriterion& { return p.stick; },

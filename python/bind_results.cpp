@@ -218,6 +218,9 @@ void bind_results(py::module_& m) {
       .def_readonly("crack_reference_radius_mm", &PuncturePrediction::crack_reference_radius_mm)
       .def_readonly("crack_radius_mm", &PuncturePrediction::crack_radius_mm)
       .def_readonly("crack_location", &PuncturePrediction::crack_location)
+      .def_readonly("criterion",
+                    &PuncturePrediction::criterion,
+                    "the criterion met first, in words (e.g. 'critical I1 = 95.2')")
       .def_property_readonly(
           "state",
           [](py::object self) { return member_with_problem(self, &PuncturePrediction::state); },

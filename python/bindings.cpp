@@ -14,4 +14,5 @@ PYBIND11_MODULE(_puncture, m) {
   puncture::python::bind_inflation(m);
   puncture::python::bind_verification(m);
   puncture::python::bind_sweep(m);
+  puncture::python::bind_failure(m);
 }

@@ -22,6 +22,7 @@ void bind_calibration(py::module_& m);   // after bind_solve: raises its SolverE
 void bind_inflation(py::module_& m);     // after bind_solve and bind_problem
 void bind_verification(py::module_& m);  // after bind_problem
 void bind_sweep(py::module_& m);         // after bind_problem
+void bind_failure(py::module_& m);       // after bind_problem, bind_results and bind_calibration
 
 // A read-only numpy array viewing `values`, which `owner` (a Python object) keeps alive.
 template <class T>

@@ -251,6 +251,41 @@ __all__ += [
     "verify",
 ]
 
+# Failure criteria (the CLI's --criterion NAME:VALUE) and their critical values from bursts.
+from ._puncture import (  # noqa: E402
+    CriticalEnergyDensity,
+    CriticalFirstInvariant,
+    CriticalTrueStress,
+    CriticalValueEstimate,
+    FailureAssessment,
+    MaxPrincipalStretch,
+    assess,
+    criterion_from_name,
+    criterion_name,
+    criterion_names,
+    critical_value_from_inflation,
+    describe_criterion,
+    failure_criteria,
+    measure_at,
+)
+
+__all__ += [
+    "CriticalEnergyDensity",
+    "CriticalFirstInvariant",
+    "CriticalTrueStress",
+    "CriticalValueEstimate",
+    "FailureAssessment",
+    "MaxPrincipalStretch",
+    "assess",
+    "criterion_from_name",
+    "criterion_name",
+    "criterion_names",
+    "critical_value_from_inflation",
+    "describe_criterion",
+    "failure_criteria",
+    "measure_at",
+]
+
 # Sweeps: many problems on every core (sweeps.py, the engine of `puncture sweep`).
 from .sweeps import sweep  # noqa: E402
 
