@@ -11,7 +11,10 @@
   sweep_runs.py mpi PUNCTURE SPEC WORKDIR MPIRUN
                                                 mpirun -n 2 and -n 3 (2 threads each), and a
                                                 killed serial run resumed by mpirun -n 2:
-                                                identical to the serial run
+                                                identical to the serial run; SPEC's neighbour
+                                                two_invalid_points.toml refused with the
+                                                serial run's message under mpirun -n 2 and
+                                                -n 3, no file left
 Exit 0 when the files are identical, 1 (with the difference) otherwise.
 """
 import csv
@@ -39,6 +42,23 @@ def run(exe, spec, out, *extra, launcher=()):
     if r.returncode != 0:
         sys.exit(f"puncture sweep {' '.join(extra)} failed ({r.returncode}):\n{r.stderr}")
     return open(out, "rb").read()
+
+
+def refused(exe, spec, out, launcher=()):
+    """The error message of a sweep that must be refused (exit 1, no file left)."""
+    for stale in (out, out + ".part", out + ".part.spec"):
+        if os.path.exists(stale):
+            os.remove(stale)
+    r = subprocess.run([*launcher, exe, "sweep", spec, "-o", out, "--quiet"],
+                       capture_output=True, text=True, timeout=600,
+                       env=MPI_ENV if launcher else None)
+    if r.returncode != 1:
+        sys.exit(f"{' '.join(launcher)} puncture sweep {spec}: expected exit 1, got "
+                 f"{r.returncode}:\n{r.stderr}")
+    for left in (out, out + ".part", out + ".part.spec"):
+        if os.path.exists(left):
+            sys.exit(f"{left} is left by a refused sweep")
+    return [line for line in r.stderr.splitlines() if line.startswith("puncture: error:")]
 
 
 def same(name_a, a, name_b, b):
@@ -156,8 +176,16 @@ def main():
             f.write(b"9,0.")
         resumed = run(exe, spec, out("killed.csv"), "--resume", launcher=(mpirun, "-n", "2"))
         same("serial", serial, "killed, resumed by mpirun -n 2", resumed)
+        invalid = os.path.join(os.path.dirname(spec), "two_invalid_points.toml")
+        want = refused(exe, invalid, out("invalid.csv"))
+        if len(want) != 1 or "sweep point 1 (thickness = -0.1)" not in want[0]:
+            sys.exit(f"the serial run's refusal does not name point 1: {want}")
+        for n in ("2", "3"):
+            got = refused(exe, invalid, out(f"invalid{n}.csv"), launcher=(mpirun, "-n", n))
+            if got != want:
+                sys.exit(f"mpirun -n {n} refused the spec with {got}, the serial run {want}")
         print(f"identical: serial, mpirun -n 2 and -n 3, and a kill at {rows} rows resumed "
-              f"by mpirun -n 2")
+              f"by mpirun -n 2; the invalid point refused as serially: {want[0]}")
     elif mode == "plot":
         svg = out("map.svg")
         if os.path.exists(svg):

@@ -51,8 +51,9 @@ int run_sweep_mpi(const CLI::App&, const SweepFlags&, const OutputFlags&) {
 
 namespace {
 
-constexpr int kRowTag = 1;  // a row: one status byte ('c' converged, 'f' failed), the CSV line
-constexpr int kEndTag = 2;  // a rank's last message: its counts (EndCounts)
+constexpr int kRowTag = 1;      // a row: one status byte ('c' converged, 'f' failed), the CSV line
+constexpr int kEndTag = 2;      // a rank's last message: its counts (EndCounts)
+constexpr int kInvalidTag = 3;  // why the sweep's lowest invalid point is invalid (its owner's)
 using EndCounts = std::array<std::uint64_t, 5>;  // delivered, converged, physical, numerical,
                                                  // outside the model
 constexpr std::uint64_t kRefused = std::numeric_limits<std::uint64_t>::max();
@@ -77,8 +78,8 @@ class MpiSession {
   int provided_ = 0, rank_ = 0, size_ = 1;
 };
 
-// Rank 0 refused the output file or the --plot target (`error` on rank 0: why); every rank
-// ends with it.
+// Rank 0 refused the output file or the --plot target (`error` on rank 0: why), or reports
+// an invalid point (no `error`); every rank ends with it.
 struct RefusedByRankZero {
   std::exception_ptr error;
 };
@@ -217,15 +218,57 @@ class OrderedWriter {
   Clock::time_point start_ = Clock::now(), last_ = Clock::now();
 };
 
-// A rank other than 0: solves its share, sends every row, then its counts.
-int run_share(const MpiSession& mpi, const SweepFile& file, const SweepFlags& f,
-              std::size_t first) {
+// This rank's points from `first` on: first + rank, first + rank + P, ...
+SweepOptions share_options(const MpiSession& mpi, const SweepFlags& f, std::size_t first) {
   SweepOptions options;
   options.threads = mpi.threads_may_send() ? f.threads : 1;
   options.first_point = first;
   options.stride = static_cast<std::size_t>(mpi.size());
   options.offset = static_cast<std::size_t>(mpi.rank());
   options.stop = &interrupt_flag();
+  return options;
+}
+
+std::string what_of(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    return "an unknown error";
+  }
+}
+
+// Each rank checks its own points only (a serial run's check, split); the sweep's lowest
+// invalid point is then reported by rank 0 with its owner's message, as the serial run
+// reports it: InputError on rank 0, RefusedByRankZero on the others.
+void check_points_together(const MpiSession& mpi, const SweepSpec& spec,
+                           const ProblemOfPoint& problem_of, const SweepOptions& options) {
+  constexpr std::uint64_t kNone = std::numeric_limits<std::uint64_t>::max();
+  const auto invalid = first_invalid_point(spec, problem_of, options);
+  const std::uint64_t mine = invalid ? invalid->index : kNone;
+  std::uint64_t lowest = kNone;
+  MPI_Allreduce(&mine, &lowest, 1, MPI_UINT64_T, MPI_MIN, MPI_COMM_WORLD);
+  if (lowest == kNone) return;
+  const int owner = static_cast<int>((lowest - options.first_point) % options.stride);
+  std::string why;
+  if (owner == mpi.rank()) why = what_of(invalid->error);
+  if (owner != 0 && owner == mpi.rank())
+    MPI_Send(why.data(), static_cast<int>(why.size()), MPI_CHAR, 0, kInvalidTag, MPI_COMM_WORLD);
+  if (mpi.rank() != 0) throw RefusedByRankZero{};
+  if (owner != 0) {
+    MPI_Status status;
+    MPI_Probe(owner, kInvalidTag, MPI_COMM_WORLD, &status);
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_CHAR, &bytes);
+    why.assign(static_cast<std::size_t>(bytes), '\0');
+    MPI_Recv(why.data(), bytes, MPI_CHAR, owner, kInvalidTag, MPI_COMM_WORLD, &status);
+  }
+  throw InputError(why);
+}
+
+// A rank other than 0: solves its share (checked), sends every row, then its counts.
+int run_share(const SweepFile& file, const ProblemOfPoint& problem_of, SweepOptions options) {
   options.on_row = [](const SweepRow& row) {
     std::string message(1, row.ok() ? 'c' : 'f');
     message += sweep_csv_line(row);
@@ -235,10 +278,9 @@ int run_share(const MpiSession& mpi, const SweepFile& file, const SweepFlags& f,
   SweepSummary summary;
   const StopOnSignals signals;
   try {
-    summary = sweep(file.spec, problem_of_flags(file.spec, file.fixed), options);
+    summary = sweep(file.spec, problem_of, options);
   } catch (...) {
-    // Rank 0 meets an invalid point too and reports it; otherwise its file stops before this
-    // rank's first missing row.
+    // Rank 0's file stops before this rank's first missing row.
     const EndCounts none{};
     MPI_Send(none.data(), 5, MPI_UINT64_T, 0, kEndTag, MPI_COMM_WORLD);
     throw;
@@ -280,7 +322,16 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
   MPI_Bcast(&first, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
   if (refused) throw RefusedByRankZero{refused};
   if (first == kRefused) throw RefusedByRankZero{};
-  if (!root) return run_share(mpi, file, f, first);
+  SweepOptions options = share_options(mpi, f, first);
+  const ProblemOfPoint problem_of = problem_of_flags(file.spec, file.fixed);
+  try {
+    check_points_together(mpi, file.spec, problem_of, options);
+  } catch (const InputError&) {
+    if (csv) csv->abandon_if_new_and_empty();  // rank 0's
+    throw;
+  }
+  options.points_checked = true;
+  if (!root) return run_share(file, problem_of, options);
 
   const bool terminal = isatty(STDERR_FILENO) == 1;
   OrderedWriter writer(*csv,
@@ -289,18 +340,12 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
                        total,
                        f.quiet ? nullptr : progress_line(terminal, first, total),
                        terminal ? 0.5 : 10.0);
-  SweepOptions options;
-  options.threads = mpi.threads_may_send() ? f.threads : 1;
-  options.first_point = first;
-  options.stride = static_cast<std::size_t>(mpi.size());
-  options.offset = 0;
-  options.stop = &interrupt_flag();
   options.on_row = [&writer](const SweepRow& row) { writer.own(row); };
   SweepSummary summary;
   {
     const StopOnSignals signals;
     try {
-      summary = sweep(file.spec, problem_of_flags(file.spec, file.fixed), options);
+      summary = sweep(file.spec, problem_of, options);
     } catch (const InvalidInput& e) {
       writer.collect_ends();
       csv->abandon_if_new_and_empty();
@@ -354,9 +399,9 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
 
 int run_sweep_mpi(const CLI::App& app, const SweepFlags& f, const OutputFlags& output) {
   const MpiSession mpi;
-  // Invalid input is met by every rank (the same spec, every point checked on each): rank 0
-  // says why, then all end together (a rank ending first would have mpirun stop rank 0 before
-  // it speaks).
+  // Invalid input: an invalid spec is met by every rank, an invalid point by the rank owning
+  // it, which tells rank 0; rank 0 says why, then all end together (a rank ending first would
+  // have mpirun stop rank 0 before it speaks).
   const auto together = [&mpi](const char* what) {
     if (mpi.rank() == 0 && what) fmt::print(stderr, "puncture: error: {}\n", what);
     MPI_Barrier(MPI_COMM_WORLD);
