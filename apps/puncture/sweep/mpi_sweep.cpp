@@ -18,6 +18,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "design_map.hpp"
@@ -58,6 +59,29 @@ using EndCounts = std::array<std::uint64_t, 5>;  // delivered, converged, physic
                                                  // outside the model
 constexpr std::uint64_t kRefused = std::numeric_limits<std::uint64_t>::max();
 
+// Waits without spinning: Open MPI's blocking calls poll at full speed, and a rank done
+// before the others would burn its core (and, on a shared or oversubscribed machine, the time
+// of the ranks still solving) until they end.  A millisecond's delay is nothing to a sweep.
+constexpr auto kIdlePoll = std::chrono::milliseconds(1);
+
+void probe_idly(int source, MPI_Status& status) {
+  for (int there = 0;;) {
+    MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &there, &status);
+    if (there) return;
+    std::this_thread::sleep_for(kIdlePoll);
+  }
+}
+
+void barrier_idly() {
+  MPI_Request request;
+  MPI_Ibarrier(MPI_COMM_WORLD, &request);
+  for (int done = 0;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    std::this_thread::sleep_for(kIdlePoll);
+  }
+}
+
 class MpiSession {
  public:
   MpiSession() {
@@ -65,7 +89,11 @@ class MpiSession {
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
   }
-  ~MpiSession() { MPI_Finalize(); }
+  // A rank done first waits for the others idly (MPI_Finalize would spin).
+  ~MpiSession() {
+    barrier_idly();
+    MPI_Finalize();
+  }
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
   int rank() const { return rank_; }
@@ -128,7 +156,7 @@ class OrderedWriter {
         MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &there, &status);
         if (!there) return;
       } else {
-        MPI_Probe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+        probe_idly(source, status);
       }
       if (status.MPI_TAG == kEndTag) {
         EndCounts counts;
@@ -150,7 +178,7 @@ class OrderedWriter {
     for (std::size_t q = 1; q < ranks_; ++q) {
       while (!ended_[q]) {
         MPI_Status status;
-        MPI_Probe(static_cast<int>(q), MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+        probe_idly(static_cast<int>(q), status);
         if (status.MPI_TAG == kEndTag) {
           EndCounts counts;
           MPI_Recv(counts.data(),
