@@ -19,6 +19,26 @@ std::string describe(const std::vector<std::string>& names, const SweepPoint& po
   return fmt::format("sweep point {} ({})", point.index, fmt::join(pairs, ", "));
 }
 
+// Registering the problem's flags (add_problem_options) is three quarters of building a
+// point's problem through them: each thread registers them once and parses every point from the
+// defaults (a parse clears the previous one's results; `flags = defaults_` its values).
+class FlagParser {
+ public:
+  FlagParser() {
+    add_problem_options(app_, flags_);
+    defaults_ = flags_;  // the options' pointers included
+  }
+  Problem problem_of(std::vector<std::string>& args) {
+    flags_ = defaults_;
+    app_.parse(args);
+    return make_problem(flags_);
+  }
+
+ private:
+  CLI::App app_;
+  ProblemFlags flags_, defaults_;
+};
+
 }  // namespace
 
 ProblemOfPoint problem_of_flags(const SweepSpec& spec,
@@ -26,9 +46,7 @@ ProblemOfPoint problem_of_flags(const SweepSpec& spec,
   std::vector<std::string> names;
   for (const SweepParameter& p : spec.parameters) names.push_back(p.name);
   return [names, fixed = std::move(fixed)](const SweepPoint& point) {
-    CLI::App app;
-    ProblemFlags flags;
-    add_problem_options(app, flags);
+    thread_local FlagParser parser;
     // '--flag=value' keeps a value such as -0.1 from reading as a flag; CLI11 takes the
     // arguments last first.
     std::vector<std::string> args;
@@ -37,8 +55,7 @@ ProblemOfPoint problem_of_flags(const SweepSpec& spec,
       args.push_back(fmt::format("--{}={}", names[j], point.texts[j]));
     std::reverse(args.begin(), args.end());
     try {
-      app.parse(args);
-      return make_problem(flags);
+      return parser.problem_of(args);
     } catch (const CLI::ParseError& e) {
       throw InputError(fmt::format("{}: {}", describe(names, point), e.what()));
     } catch (const InputError& e) {
