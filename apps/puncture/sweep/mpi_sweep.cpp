@@ -10,6 +10,7 @@
 #ifdef PUNCTURE_HAVE_MPI
 #include <mpi.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -63,14 +64,6 @@ constexpr std::uint64_t kRefused = std::numeric_limits<std::uint64_t>::max();
 // before the others would burn its core (and, on a shared or oversubscribed machine, the time
 // of the ranks still solving) until they end.  A millisecond's delay is nothing to a sweep.
 constexpr auto kIdlePoll = std::chrono::milliseconds(1);
-
-void probe_idly(int source, MPI_Status& status) {
-  for (int there = 0;;) {
-    MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &there, &status);
-    if (there) return;
-    std::this_thread::sleep_for(kIdlePoll);
-  }
-}
 
 void barrier_idly() {
   MPI_Request request;
@@ -128,6 +121,7 @@ class OrderedWriter {
         first_(first),
         total_(total),
         ended_(ranks_, false),
+        queued_(ranks_),
         progress_(std::move(progress)),
         progress_every_s_(progress_every_s) {}
 
@@ -139,70 +133,30 @@ class OrderedWriter {
   // Writes every row that is there (block: waits for the others' rows until each rank ended).
   void pump(bool block) {
     for (;;) {
+      receive(kMaxQueued);
       const std::size_t g = first_ + written_;
       if (g >= total_) return;
       const std::size_t owner = (g - first_) % ranks_;
-      if (owner == 0) {
-        if (own_.empty()) return;  // rank 0's next row not solved yet (or it stopped)
-        write(own_.front().first, own_.front().second);
-        own_.pop_front();
+      auto& rows = owner == 0 ? own_ : queued_[owner];
+      if (!rows.empty()) {
+        write(rows.front().first, rows.front().second);
+        rows.pop_front();
         continue;
       }
-      if (ended_[owner]) return;  // that rank stopped before this point: the file ends here
-      const int source = static_cast<int>(owner);
-      MPI_Status status;
-      if (!block) {
-        int there = 0;
-        MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &there, &status);
-        if (!there) return;
-      } else {
-        probe_idly(source, status);
-      }
-      if (status.MPI_TAG == kEndTag) {
-        EndCounts counts;
-        MPI_Recv(counts.data(), 5, MPI_UINT64_T, source, kEndTag, MPI_COMM_WORLD, &status);
-        ended_[owner] = true;
-        add(counts);
-        continue;
-      }
-      int bytes = 0;
-      MPI_Get_count(&status, MPI_CHAR, &bytes);
-      std::string message(static_cast<std::size_t>(bytes), '\0');
-      MPI_Recv(message.data(), bytes, MPI_CHAR, source, kRowTag, MPI_COMM_WORLD, &status);
-      write(message[0], message.substr(1));
+      // Rank 0's next row not solved yet (or it stopped); another rank's not there yet, or that
+      // rank stopped before this point: the file ends here.
+      if (owner == 0 || ended_[owner] || !block) return;
+      std::this_thread::sleep_for(kIdlePoll);
     }
   }
 
-  // The other ranks' ends not yet received (they follow their last row).
+  // The other ranks' ends not yet received (they follow their last row).  Rows still queued
+  // lie beyond a gap: the file stops before them; a resume solves them again.
   void collect_ends() {
-    for (std::size_t q = 1; q < ranks_; ++q) {
-      while (!ended_[q]) {
-        MPI_Status status;
-        probe_idly(static_cast<int>(q), status);
-        if (status.MPI_TAG == kEndTag) {
-          EndCounts counts;
-          MPI_Recv(counts.data(),
-                   5,
-                   MPI_UINT64_T,
-                   static_cast<int>(q),
-                   kEndTag,
-                   MPI_COMM_WORLD,
-                   &status);
-          ended_[q] = true;
-          add(counts);
-        } else {  // a row beyond a gap: the file stops before it; resume solves it again
-          int bytes = 0;
-          MPI_Get_count(&status, MPI_CHAR, &bytes);
-          std::string discarded(static_cast<std::size_t>(bytes), '\0');
-          MPI_Recv(discarded.data(),
-                   bytes,
-                   MPI_CHAR,
-                   static_cast<int>(q),
-                   kRowTag,
-                   MPI_COMM_WORLD,
-                   &status);
-        }
-      }
+    while (std::find(ended_.begin() + 1, ended_.end(), false) != ended_.end()) {
+      receive(std::numeric_limits<std::size_t>::max());
+      for (auto& rows : queued_) rows.clear();
+      std::this_thread::sleep_for(kIdlePoll);
     }
   }
 
@@ -234,11 +188,41 @@ class OrderedWriter {
     for (std::size_t k = 0; k < c.size(); ++k) others_[k] += c[k];
   }
 
+  // Takes every message there from the other ranks, in whatever order they come, up to
+  // `most` rows queued per rank: a rank's MPI_Send then finds its rows taken and does not spin
+  // waiting for rank 0 to reach them (each rank's rows arrive in its own order).
+  void receive(std::size_t most) {
+    for (std::size_t q = 1; q < ranks_; ++q) {
+      const int source = static_cast<int>(q);
+      while (!ended_[q] && queued_[q].size() < most) {
+        int there = 0;
+        MPI_Status status;
+        MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &there, &status);
+        if (!there) break;
+        if (status.MPI_TAG == kEndTag) {
+          EndCounts counts;
+          MPI_Recv(counts.data(), 5, MPI_UINT64_T, source, kEndTag, MPI_COMM_WORLD, &status);
+          ended_[q] = true;
+          add(counts);
+          break;
+        }
+        int bytes = 0;
+        MPI_Get_count(&status, MPI_CHAR, &bytes);
+        std::string message(static_cast<std::size_t>(bytes), '\0');
+        MPI_Recv(message.data(), bytes, MPI_CHAR, source, kRowTag, MPI_COMM_WORLD, &status);
+        queued_[q].emplace_back(message[0], message.substr(1));
+      }
+    }
+  }
+
   using Clock = std::chrono::steady_clock;
   ResumableCsv& csv_;
   std::size_t ranks_, first_, total_;
   std::vector<bool> ended_;
+  // Rows solved, not yet written: rank 0's own, and those received from rank q (queued_[q]).
+  static constexpr std::size_t kMaxQueued = 4096;  // per rank: ~1 MB of rows
   std::deque<std::pair<char, std::string> > own_;
+  std::vector<std::deque<std::pair<char, std::string> > > queued_;
   std::size_t written_ = 0, failed_ = 0;
   EndCounts others_{};
   std::function<void(const SweepProgress&)> progress_;
