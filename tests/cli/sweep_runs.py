@@ -4,7 +4,9 @@
   sweep_runs.py threads PUNCTURE SPEC WORKDIR   serial, --threads 2 and --threads 3: identical
   sweep_runs.py resume PUNCTURE SPEC WORKDIR    killed mid-run (SIGKILL, a row cut short; and
                                                 SIGINT) then --resume: identical to one run
-  sweep_runs.py matches PUNCTURE SPEC WORKDIR   every row equal to `puncture puncture` and
+  sweep_runs.py matches PUNCTURE SPEC WORKDIR [EVERY]
+                                                every row (or every EVERY-th and the last)
+                                                equal to `puncture puncture` and
                                                 `puncture state --depth D` with its flags
   sweep_runs.py plot PUNCTURE SPEC WORKDIR      --plot map.svg: the map is drawn, its failed
                                                 points marked
@@ -107,7 +109,7 @@ def solve(exe, command, flags):
     return r.returncode, json.loads(r.stdout)
 
 
-def matches(exe, spec_path, csv_path):
+def matches(exe, spec_path, csv_path, every=1):
     """Each row's numbers are those of the single-problem commands with the same flags, exactly
     (both print the shortest exact decimal of each double); a failed row fails there too, with
     the same status."""
@@ -118,6 +120,7 @@ def matches(exe, spec_path, csv_path):
     depths = spec.get("force-at-depth", [])
     with open(csv_path, newline="") as f:
         rows = list(csv.DictReader(f))
+    rows = [row for i, row in enumerate(rows) if i % every == 0 or i == len(rows) - 1]
     for row in rows:
         flags = fixed + [f"--{n}={row[n]}" for n in names]
         rc, doc = solve(exe, ["puncture"], flags)
@@ -198,7 +201,7 @@ def main():
         print(f"{svg} drawn, failed points marked")
     elif mode == "matches":
         run(exe, spec, out("matches.csv"), "--threads", "2")
-        matches(exe, spec, out("matches.csv"))
+        matches(exe, spec, out("matches.csv"), int(sys.argv[5]) if len(sys.argv) > 5 else 1)
     else:
         sys.exit(f"unknown mode {mode}")
 
