@@ -4,6 +4,9 @@
 //   BM_SweepPuncture/T  a 64-point Latin hypercube of puncture points around the paper's
 //                       membrane (friction, critical I1, thickness, shear modulus) on T threads;
 //                       items_per_second: points per second in all
+//   BM_SweepShare/P    the share of one of P processes (SweepOptions stride P, offset 0; as
+//                       rank 0 of mpirun -n P) on 1 thread: it checks and solves its own
+//                       points only, so its points per second per core equal the serial run's
 // Per-point cost / one solve: sweep overhead (point list, validation pass, ordered delivery)
 // and the points' own spread; T threads / 1 thread: the parallel efficiency.
 #include <benchmark/benchmark.h>
@@ -58,6 +61,18 @@ void BM_SweepPuncture(benchmark::State& state) {
   state.counters["failed"] = static_cast<double>(failed);
 }
 BENCHMARK(BM_SweepPuncture)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_SweepShare(benchmark::State& state) {
+  const SweepSpec spec = spec_around_paper();
+  SweepOptions options;
+  options.threads = 1;
+  options.stride = static_cast<std::size_t>(state.range(0));
+  std::size_t rows = 0;
+  options.on_row = [&rows](const SweepRow&) { ++rows; };
+  for (auto _ : state) benchmark::DoNotOptimize(sweep(spec, problem_at, options));
+  state.SetItemsProcessed(static_cast<std::int64_t>(rows));
+}
+BENCHMARK(BM_SweepShare)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <string>
@@ -161,6 +162,9 @@ struct SweepOptions {
   // When set and true, no further point is started; the rows solved are delivered and the
   // summary is Incomplete (e.g. set by a SIGINT handler).
   const std::atomic<bool>* stop = nullptr;
+  // true: the caller found this run's points valid already (first_invalid_point with the same
+  // spec, problem_of and options), and sweep() does not build each problem a second time.
+  bool points_checked = false;
 };
 
 struct SweepSummary : Outcome {  // Converged when all own_points were delivered, else Incomplete
@@ -173,16 +177,31 @@ struct SweepSummary : Outcome {  // Converged when all own_points were delivered
   std::size_t failed_numerical = 0;
   std::size_t failed_outside_model = 0;
   int threads = 1;
-  double validation_s = 0.0;  // building and checking every point's problem
+  double validation_s = 0.0;  // building and checking this run's points' problems
   double solve_s = 0.0;       // the solves and the sink
   double points_per_second() const;
   std::string brief_report() const;  // one line
   std::string full_report() const;
 };
 
-// Checks the spec and every point's problem (throws std::invalid_argument / the problem_of's
-// exception for the lowest invalid point), then solves the points from options.first_point on,
-// in parallel, delivering every row in point order to options.on_row.
+// The check sweep() makes before it solves anything: the lowest of this run's points (from
+// options.first_point on, this process's share: offset, stride) whose problem is invalid, with
+// the exception building it threw (problem_of's own, or InvalidInput); nullopt when all are
+// valid.  Processes that each check their own share find the whole sweep's lowest invalid
+// point by comparing the indices (the CLI's mpirun runs do).  Throws std::invalid_argument for
+// an invalid spec or options, as sweep().
+struct InvalidPoint {
+  std::size_t index = 0;
+  std::exception_ptr error;
+};
+std::optional<InvalidPoint> first_invalid_point(const SweepSpec& spec,
+                                                const ProblemOfPoint& problem_of,
+                                                const SweepOptions& options = {});
+
+// Checks the spec and this run's points' problems (throws std::invalid_argument, or the
+// problem_of's exception of the lowest invalid point; none when options.points_checked), then
+// solves the points from options.first_point on (this process's share), in parallel,
+// delivering every row in point order to options.on_row.
 SweepSummary sweep(const SweepSpec& spec, const ProblemOfPoint& problem_of,
                    const SweepOptions& options = {});
 

@@ -51,7 +51,9 @@ def sweep(spec, problem_of, threads=0, share=(0, 1), dataframe=None):
     (a dict), or a pandas DataFrame when pandas is installed and `dataframe` is not False.
 
     share=(k, n): only the points k, k + n, k + 2n, ... (one of n workers, e.g. on a Dask
-    cluster: examples/dask_sweep.py); the n shares' rows together are the whole sweep's."""
+    cluster: examples/dask_sweep.py); the n shares' rows together are the whole sweep's.  A
+    share checks its own points' problems only: an invalid point raises in the share holding
+    it."""
     known = {"design", "samples", "seed", "puncture", "force-at-depth", "parameters"}
     unknown = set(spec) - known
     if unknown:

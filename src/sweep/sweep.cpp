@@ -57,39 +57,72 @@ void on_threads(int threads, Body&& body) {
 #endif
 }
 
-// Every point from `first` on is a valid problem, else the exception of the lowest invalid one
-// (the same whatever the number of threads).
-void check_every_point(const SweepSpec& spec, const ProblemOfPoint& problem_of, std::size_t first,
-                       std::size_t count, int threads) {
+// This run's points first + offset + k stride, k = 0 .. own - 1.
+struct Share {
+  std::size_t first = 0, offset = 0, stride = 1, own = 0;
+  std::size_t index(std::size_t k) const { return first + offset + k * stride; }
+};
+
+Share share_of(const SweepOptions& options, std::size_t count) {
+  const std::size_t start = options.first_point + options.offset;
+  const std::size_t own = start < count ? (count - start + options.stride - 1) / options.stride : 0;
+  return {options.first_point, options.offset, options.stride, own};
+}
+
+// The lowest invalid point of the share (the same whatever the number of threads: every point
+// below the lowest failure found is checked).
+std::optional<InvalidPoint> check_share(const SweepSpec& spec, const ProblemOfPoint& problem_of,
+                                        const Share& share, int threads) {
   std::mutex mutex;
-  std::size_t next = first;
-  std::size_t worst = std::numeric_limits<std::size_t>::max();
-  std::exception_ptr error;
+  std::size_t next = 0;
+  std::size_t worst = std::numeric_limits<std::size_t>::max();  // as k
+  std::optional<InvalidPoint> lowest;
   constexpr std::size_t kChunk = 64;
   on_threads(threads, [&] {
     for (;;) {
       std::size_t begin;
       {
         const std::lock_guard lock(mutex);
-        if (next >= count || next > worst) return;
+        if (next >= share.own || next > worst) return;
         begin = next;
-        next = std::min(count, next + kChunk);
+        next = std::min(share.own, next + kChunk);
       }
-      for (std::size_t i = begin; i < std::min(count, begin + kChunk); ++i) {
+      for (std::size_t k = begin; k < std::min(share.own, begin + kChunk); ++k) {
         try {
-          checked_problem(problem_of, detail::point_of_valid_spec(spec, i));
+          checked_problem(problem_of, detail::point_of_valid_spec(spec, share.index(k)));
         } catch (...) {
           const std::lock_guard lock(mutex);
-          if (i < worst) {
-            worst = i;
-            error = std::current_exception();
+          if (k < worst) {
+            worst = k;
+            lowest = InvalidPoint{share.index(k), std::current_exception()};
           }
           break;
         }
       }
     }
   });
-  if (error) std::rethrow_exception(error);
+  return lowest;
+}
+
+// The spec and the options, checked as every entry point needs them.
+void check_arguments(const SweepSpec& spec, const ProblemOfPoint& problem_of,
+                     const SweepOptions& options) {
+  if (auto errors = validation_errors(spec); !errors.empty())
+    throw InvalidInput(std::move(errors), "invalid sweep:");
+  if (!problem_of) throw InvalidInput("problem_of", "problem_of: no function given");
+  if (options.threads < 0)
+    throw InvalidInput(
+        "threads", fmt::format("threads: must be >= 0 (0: every core), got {}", options.threads));
+  if (options.stride < 1 || options.offset >= options.stride)
+    throw InvalidInput("stride",
+                       fmt::format("stride: needs stride >= 1 and offset < stride, got {} and {}",
+                                   options.stride,
+                                   options.offset));
+  const std::size_t count = point_count(spec);
+  if (options.first_point > count)
+    throw InvalidInput(
+        "first_point",
+        fmt::format("first_point: {} is beyond the sweep's {} points", options.first_point, count));
 }
 
 // The solve pass's shared state: claims, the window of solved rows and the delivery.
@@ -225,35 +258,32 @@ class Window {
 
 }  // namespace
 
+std::optional<InvalidPoint> first_invalid_point(const SweepSpec& spec,
+                                                const ProblemOfPoint& problem_of,
+                                                const SweepOptions& options) {
+  check_arguments(spec, problem_of, options);
+  return check_share(
+      spec, problem_of, share_of(options, point_count(spec)), thread_count(options.threads));
+}
+
 SweepSummary sweep(const SweepSpec& spec, const ProblemOfPoint& problem_of,
                    const SweepOptions& options) {
-  if (auto errors = validation_errors(spec); !errors.empty())
-    throw InvalidInput(std::move(errors), "invalid sweep:");
-  if (!problem_of) throw InvalidInput("problem_of", "problem_of: no function given");
-  if (options.threads < 0)
-    throw InvalidInput(
-        "threads", fmt::format("threads: must be >= 0 (0: every core), got {}", options.threads));
+  check_arguments(spec, problem_of, options);
   const std::size_t count = point_count(spec);
-  if (options.stride < 1 || options.offset >= options.stride)
-    throw InvalidInput("stride",
-                       fmt::format("stride: needs stride >= 1 and offset < stride, got {} and {}",
-                                   options.stride,
-                                   options.offset));
-  if (options.first_point > count)
-    throw InvalidInput(
-        "first_point",
-        fmt::format("first_point: {} is beyond the sweep's {} points", options.first_point, count));
+  const Share share = share_of(options, count);
   SweepSummary summary;
   summary.total_points = count;
   summary.first_point = options.first_point;
   summary.threads = thread_count(options.threads);
 
-  const auto validation_start = Clock::now();
-  check_every_point(spec, problem_of, options.first_point, count, summary.threads);
-  summary.validation_s = seconds_since(validation_start);
+  if (!options.points_checked) {
+    const auto validation_start = Clock::now();
+    if (const auto invalid = check_share(spec, problem_of, share, summary.threads))
+      std::rethrow_exception(invalid->error);
+    summary.validation_s = seconds_since(validation_start);
+  }
 
-  const std::size_t start = options.first_point + options.offset;
-  const std::size_t own = start < count ? (count - start + options.stride - 1) / options.stride : 0;
+  const std::size_t own = share.own;
   Window window(spec, problem_of, options, own, summary.threads, summary);
   on_threads(summary.threads, [&] { window.work(); });
   window.rethrow_failure();

@@ -4,14 +4,19 @@
   sweep_runs.py threads PUNCTURE SPEC WORKDIR   serial, --threads 2 and --threads 3: identical
   sweep_runs.py resume PUNCTURE SPEC WORKDIR    killed mid-run (SIGKILL, a row cut short; and
                                                 SIGINT) then --resume: identical to one run
-  sweep_runs.py matches PUNCTURE SPEC WORKDIR   every row equal to `puncture puncture` and
+  sweep_runs.py matches PUNCTURE SPEC WORKDIR [EVERY]
+                                                every row (or every EVERY-th and the last)
+                                                equal to `puncture puncture` and
                                                 `puncture state --depth D` with its flags
   sweep_runs.py plot PUNCTURE SPEC WORKDIR      --plot map.svg: the map is drawn, its failed
                                                 points marked
   sweep_runs.py mpi PUNCTURE SPEC WORKDIR MPIRUN
                                                 mpirun -n 2 and -n 3 (2 threads each), and a
                                                 killed serial run resumed by mpirun -n 2:
-                                                identical to the serial run
+                                                identical to the serial run; SPEC's neighbour
+                                                two_invalid_points.toml refused with the
+                                                serial run's message under mpirun -n 2 and
+                                                -n 3, no file left
 Exit 0 when the files are identical, 1 (with the difference) otherwise.
 """
 import csv
@@ -39,6 +44,23 @@ def run(exe, spec, out, *extra, launcher=()):
     if r.returncode != 0:
         sys.exit(f"puncture sweep {' '.join(extra)} failed ({r.returncode}):\n{r.stderr}")
     return open(out, "rb").read()
+
+
+def refused(exe, spec, out, launcher=()):
+    """The error message of a sweep that must be refused (exit 1, no file left)."""
+    for stale in (out, out + ".part", out + ".part.spec"):
+        if os.path.exists(stale):
+            os.remove(stale)
+    r = subprocess.run([*launcher, exe, "sweep", spec, "-o", out, "--quiet"],
+                       capture_output=True, text=True, timeout=600,
+                       env=MPI_ENV if launcher else None)
+    if r.returncode != 1:
+        sys.exit(f"{' '.join(launcher)} puncture sweep {spec}: expected exit 1, got "
+                 f"{r.returncode}:\n{r.stderr}")
+    for left in (out, out + ".part", out + ".part.spec"):
+        if os.path.exists(left):
+            sys.exit(f"{left} is left by a refused sweep")
+    return [line for line in r.stderr.splitlines() if line.startswith("puncture: error:")]
 
 
 def same(name_a, a, name_b, b):
@@ -87,7 +109,7 @@ def solve(exe, command, flags):
     return r.returncode, json.loads(r.stdout)
 
 
-def matches(exe, spec_path, csv_path):
+def matches(exe, spec_path, csv_path, every=1):
     """Each row's numbers are those of the single-problem commands with the same flags, exactly
     (both print the shortest exact decimal of each double); a failed row fails there too, with
     the same status."""
@@ -98,6 +120,7 @@ def matches(exe, spec_path, csv_path):
     depths = spec.get("force-at-depth", [])
     with open(csv_path, newline="") as f:
         rows = list(csv.DictReader(f))
+    rows = [row for i, row in enumerate(rows) if i % every == 0 or i == len(rows) - 1]
     for row in rows:
         flags = fixed + [f"--{n}={row[n]}" for n in names]
         rc, doc = solve(exe, ["puncture"], flags)
@@ -156,8 +179,16 @@ def main():
             f.write(b"9,0.")
         resumed = run(exe, spec, out("killed.csv"), "--resume", launcher=(mpirun, "-n", "2"))
         same("serial", serial, "killed, resumed by mpirun -n 2", resumed)
+        invalid = os.path.join(os.path.dirname(spec), "two_invalid_points.toml")
+        want = refused(exe, invalid, out("invalid.csv"))
+        if len(want) != 1 or "sweep point 1 (thickness = -0.1)" not in want[0]:
+            sys.exit(f"the serial run's refusal does not name point 1: {want}")
+        for n in ("2", "3"):
+            got = refused(exe, invalid, out(f"invalid{n}.csv"), launcher=(mpirun, "-n", n))
+            if got != want:
+                sys.exit(f"mpirun -n {n} refused the spec with {got}, the serial run {want}")
         print(f"identical: serial, mpirun -n 2 and -n 3, and a kill at {rows} rows resumed "
-              f"by mpirun -n 2")
+              f"by mpirun -n 2; the invalid point refused as serially: {want[0]}")
     elif mode == "plot":
         svg = out("map.svg")
         if os.path.exists(svg):
@@ -170,7 +201,7 @@ def main():
         print(f"{svg} drawn, failed points marked")
     elif mode == "matches":
         run(exe, spec, out("matches.csv"), "--threads", "2")
-        matches(exe, spec, out("matches.csv"))
+        matches(exe, spec, out("matches.csv"), int(sys.argv[5]) if len(sys.argv) > 5 else 1)
     else:
         sys.exit(f"unknown mode {mode}")
 

@@ -3,6 +3,7 @@
 // missing rows; an invalid point or a failing sink stops the sweep with its error.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -247,6 +248,46 @@ TEST(SweepEngine, AnInvalidPointIsRefusedBeforeAnySolve) {
     }
     EXPECT_EQ(rows, 0u);
   }
+}
+
+// A share checks its own points only (points 3 and 4 are invalid): the stride-2 share from
+// offset 1 meets point 3, the one from offset 0 point 4, the lowest over the shares is the
+// whole sweep's.  Each problem is built once per check and once per solve; none is built
+// twice when the caller checked already.
+TEST(SweepEngine, EachShareChecksItsOwnPoints) {
+  SweepSpec spec;
+  spec.parameters = {{"thickness", {"0.2", "0.1", "0.3", "-0.1", "0", "0.2"}, {}}};
+  std::atomic<int> built{0};
+  const auto problem_of = [&built](const SweepPoint& p) {
+    ++built;
+    Problem problem;
+    problem.indenter = FlatPunch{1.0};
+    problem.geometry.thickness_mm = p.values[0];
+    return problem;
+  };
+  for (const int threads : {1, 2}) {
+    const auto whole = first_invalid_point(spec, problem_of, {.threads = threads});
+    ASSERT_TRUE(whole);
+    EXPECT_EQ(whole->index, 3u);
+    EXPECT_THROW(std::rethrow_exception(whole->error), InvalidInput);
+    const auto odd =
+        first_invalid_point(spec, problem_of, {.threads = threads, .stride = 2, .offset = 1});
+    const auto even = first_invalid_point(spec, problem_of, {.threads = threads, .stride = 2});
+    ASSERT_TRUE(odd && even);
+    EXPECT_EQ(odd->index, 3u);
+    EXPECT_EQ(even->index, 4u);
+    // From point 5 on (a resume), the share of offset 0 holds no invalid point.
+    EXPECT_FALSE(first_invalid_point(spec, problem_of, {.first_point = 5, .stride = 2}));
+  }
+  const SweepOptions tail{.threads = 1, .first_point = 5, .stride = 2};
+  built = 0;
+  EXPECT_EQ(run(spec, problem_of, tail).size(), 1u);
+  EXPECT_EQ(built.load(), 2);  // point 5: checked, then solved
+  built = 0;
+  SweepOptions checked = tail;
+  checked.points_checked = true;
+  EXPECT_EQ(run(spec, problem_of, checked).size(), 1u);
+  EXPECT_EQ(built.load(), 1);
 }
 
 TEST(SweepEngine, ASinkThatFailsStopsTheSweepWithItsError) {

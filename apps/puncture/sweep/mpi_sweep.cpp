@@ -10,6 +10,7 @@
 #ifdef PUNCTURE_HAVE_MPI
 #include <mpi.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -18,6 +19,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "design_map.hpp"
@@ -51,11 +53,27 @@ int run_sweep_mpi(const CLI::App&, const SweepFlags&, const OutputFlags&) {
 
 namespace {
 
-constexpr int kRowTag = 1;  // a row: one status byte ('c' converged, 'f' failed), the CSV line
-constexpr int kEndTag = 2;  // a rank's last message: its counts (EndCounts)
+constexpr int kRowTag = 1;      // a row: one status byte ('c' converged, 'f' failed), the CSV line
+constexpr int kEndTag = 2;      // a rank's last message: its counts (EndCounts)
+constexpr int kInvalidTag = 3;  // why the sweep's lowest invalid point is invalid (its owner's)
 using EndCounts = std::array<std::uint64_t, 5>;  // delivered, converged, physical, numerical,
                                                  // outside the model
 constexpr std::uint64_t kRefused = std::numeric_limits<std::uint64_t>::max();
+
+// Waits without spinning: Open MPI's blocking calls poll at full speed, and a rank done
+// before the others would burn its core (and, on a shared or oversubscribed machine, the time
+// of the ranks still solving) until they end.  A millisecond's delay is nothing to a sweep.
+constexpr auto kIdlePoll = std::chrono::milliseconds(1);
+
+void barrier_idly() {
+  MPI_Request request;
+  MPI_Ibarrier(MPI_COMM_WORLD, &request);
+  for (int done = 0;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    std::this_thread::sleep_for(kIdlePoll);
+  }
+}
 
 class MpiSession {
  public:
@@ -64,7 +82,11 @@ class MpiSession {
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
   }
-  ~MpiSession() { MPI_Finalize(); }
+  // A rank done first waits for the others idly (MPI_Finalize would spin).
+  ~MpiSession() {
+    barrier_idly();
+    MPI_Finalize();
+  }
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
   int rank() const { return rank_; }
@@ -77,8 +99,8 @@ class MpiSession {
   int provided_ = 0, rank_ = 0, size_ = 1;
 };
 
-// Rank 0 refused the output file or the --plot target (`error` on rank 0: why); every rank
-// ends with it.
+// Rank 0 refused the output file or the --plot target (`error` on rank 0: why), or reports
+// an invalid point (no `error`); every rank ends with it.
 struct RefusedByRankZero {
   std::exception_ptr error;
 };
@@ -99,6 +121,7 @@ class OrderedWriter {
         first_(first),
         total_(total),
         ended_(ranks_, false),
+        queued_(ranks_),
         progress_(std::move(progress)),
         progress_every_s_(progress_every_s) {}
 
@@ -110,70 +133,30 @@ class OrderedWriter {
   // Writes every row that is there (block: waits for the others' rows until each rank ended).
   void pump(bool block) {
     for (;;) {
+      receive(kMaxQueued);
       const std::size_t g = first_ + written_;
       if (g >= total_) return;
       const std::size_t owner = (g - first_) % ranks_;
-      if (owner == 0) {
-        if (own_.empty()) return;  // rank 0's next row not solved yet (or it stopped)
-        write(own_.front().first, own_.front().second);
-        own_.pop_front();
+      auto& rows = owner == 0 ? own_ : queued_[owner];
+      if (!rows.empty()) {
+        write(rows.front().first, rows.front().second);
+        rows.pop_front();
         continue;
       }
-      if (ended_[owner]) return;  // that rank stopped before this point: the file ends here
-      const int source = static_cast<int>(owner);
-      MPI_Status status;
-      if (!block) {
-        int there = 0;
-        MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &there, &status);
-        if (!there) return;
-      } else {
-        MPI_Probe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
-      }
-      if (status.MPI_TAG == kEndTag) {
-        EndCounts counts;
-        MPI_Recv(counts.data(), 5, MPI_UINT64_T, source, kEndTag, MPI_COMM_WORLD, &status);
-        ended_[owner] = true;
-        add(counts);
-        continue;
-      }
-      int bytes = 0;
-      MPI_Get_count(&status, MPI_CHAR, &bytes);
-      std::string message(static_cast<std::size_t>(bytes), '\0');
-      MPI_Recv(message.data(), bytes, MPI_CHAR, source, kRowTag, MPI_COMM_WORLD, &status);
-      write(message[0], message.substr(1));
+      // Rank 0's next row not solved yet (or it stopped); another rank's not there yet, or that
+      // rank stopped before this point: the file ends here.
+      if (owner == 0 || ended_[owner] || !block) return;
+      std::this_thread::sleep_for(kIdlePoll);
     }
   }
 
-  // The other ranks' ends not yet received (they follow their last row).
+  // The other ranks' ends not yet received (they follow their last row).  Rows still queued
+  // lie beyond a gap: the file stops before them; a resume solves them again.
   void collect_ends() {
-    for (std::size_t q = 1; q < ranks_; ++q) {
-      while (!ended_[q]) {
-        MPI_Status status;
-        MPI_Probe(static_cast<int>(q), MPI_ANY_TAG, MPI_COMM_WORLD, &status);
-        if (status.MPI_TAG == kEndTag) {
-          EndCounts counts;
-          MPI_Recv(counts.data(),
-                   5,
-                   MPI_UINT64_T,
-                   static_cast<int>(q),
-                   kEndTag,
-                   MPI_COMM_WORLD,
-                   &status);
-          ended_[q] = true;
-          add(counts);
-        } else {  // a row beyond a gap: the file stops before it; resume solves it again
-          int bytes = 0;
-          MPI_Get_count(&status, MPI_CHAR, &bytes);
-          std::string discarded(static_cast<std::size_t>(bytes), '\0');
-          MPI_Recv(discarded.data(),
-                   bytes,
-                   MPI_CHAR,
-                   static_cast<int>(q),
-                   kRowTag,
-                   MPI_COMM_WORLD,
-                   &status);
-        }
-      }
+    while (std::find(ended_.begin() + 1, ended_.end(), false) != ended_.end()) {
+      receive(std::numeric_limits<std::size_t>::max());
+      for (auto& rows : queued_) rows.clear();
+      std::this_thread::sleep_for(kIdlePoll);
     }
   }
 
@@ -205,11 +188,41 @@ class OrderedWriter {
     for (std::size_t k = 0; k < c.size(); ++k) others_[k] += c[k];
   }
 
+  // Takes every message there from the other ranks, in whatever order they come, up to
+  // `most` rows queued per rank: a rank's MPI_Send then finds its rows taken and does not spin
+  // waiting for rank 0 to reach them (each rank's rows arrive in its own order).
+  void receive(std::size_t most) {
+    for (std::size_t q = 1; q < ranks_; ++q) {
+      const int source = static_cast<int>(q);
+      while (!ended_[q] && queued_[q].size() < most) {
+        int there = 0;
+        MPI_Status status;
+        MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &there, &status);
+        if (!there) break;
+        if (status.MPI_TAG == kEndTag) {
+          EndCounts counts;
+          MPI_Recv(counts.data(), 5, MPI_UINT64_T, source, kEndTag, MPI_COMM_WORLD, &status);
+          ended_[q] = true;
+          add(counts);
+          break;
+        }
+        int bytes = 0;
+        MPI_Get_count(&status, MPI_CHAR, &bytes);
+        std::string message(static_cast<std::size_t>(bytes), '\0');
+        MPI_Recv(message.data(), bytes, MPI_CHAR, source, kRowTag, MPI_COMM_WORLD, &status);
+        queued_[q].emplace_back(message[0], message.substr(1));
+      }
+    }
+  }
+
   using Clock = std::chrono::steady_clock;
   ResumableCsv& csv_;
   std::size_t ranks_, first_, total_;
   std::vector<bool> ended_;
+  // Rows solved, not yet written: rank 0's own, and those received from rank q (queued_[q]).
+  static constexpr std::size_t kMaxQueued = 4096;  // per rank: ~1 MB of rows
   std::deque<std::pair<char, std::string> > own_;
+  std::vector<std::deque<std::pair<char, std::string> > > queued_;
   std::size_t written_ = 0, failed_ = 0;
   EndCounts others_{};
   std::function<void(const SweepProgress&)> progress_;
@@ -217,15 +230,57 @@ class OrderedWriter {
   Clock::time_point start_ = Clock::now(), last_ = Clock::now();
 };
 
-// A rank other than 0: solves its share, sends every row, then its counts.
-int run_share(const MpiSession& mpi, const SweepFile& file, const SweepFlags& f,
-              std::size_t first) {
+// This rank's points from `first` on: first + rank, first + rank + P, ...
+SweepOptions share_options(const MpiSession& mpi, const SweepFlags& f, std::size_t first) {
   SweepOptions options;
   options.threads = mpi.threads_may_send() ? f.threads : 1;
   options.first_point = first;
   options.stride = static_cast<std::size_t>(mpi.size());
   options.offset = static_cast<std::size_t>(mpi.rank());
   options.stop = &interrupt_flag();
+  return options;
+}
+
+std::string what_of(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    return "an unknown error";
+  }
+}
+
+// Each rank checks its own points only (a serial run's check, split); the sweep's lowest
+// invalid point is then reported by rank 0 with its owner's message, as the serial run
+// reports it: InputError on rank 0, RefusedByRankZero on the others.
+void check_points_together(const MpiSession& mpi, const SweepSpec& spec,
+                           const ProblemOfPoint& problem_of, const SweepOptions& options) {
+  constexpr std::uint64_t kNone = std::numeric_limits<std::uint64_t>::max();
+  const auto invalid = first_invalid_point(spec, problem_of, options);
+  const std::uint64_t mine = invalid ? invalid->index : kNone;
+  std::uint64_t lowest = kNone;
+  MPI_Allreduce(&mine, &lowest, 1, MPI_UINT64_T, MPI_MIN, MPI_COMM_WORLD);
+  if (lowest == kNone) return;
+  const int owner = static_cast<int>((lowest - options.first_point) % options.stride);
+  std::string why;
+  if (owner == mpi.rank()) why = what_of(invalid->error);
+  if (owner != 0 && owner == mpi.rank())
+    MPI_Send(why.data(), static_cast<int>(why.size()), MPI_CHAR, 0, kInvalidTag, MPI_COMM_WORLD);
+  if (mpi.rank() != 0) throw RefusedByRankZero{};
+  if (owner != 0) {
+    MPI_Status status;
+    MPI_Probe(owner, kInvalidTag, MPI_COMM_WORLD, &status);
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_CHAR, &bytes);
+    why.assign(static_cast<std::size_t>(bytes), '\0');
+    MPI_Recv(why.data(), bytes, MPI_CHAR, owner, kInvalidTag, MPI_COMM_WORLD, &status);
+  }
+  throw InputError(why);
+}
+
+// A rank other than 0: solves its share (checked), sends every row, then its counts.
+int run_share(const SweepFile& file, const ProblemOfPoint& problem_of, SweepOptions options) {
   options.on_row = [](const SweepRow& row) {
     std::string message(1, row.ok() ? 'c' : 'f');
     message += sweep_csv_line(row);
@@ -235,10 +290,9 @@ int run_share(const MpiSession& mpi, const SweepFile& file, const SweepFlags& f,
   SweepSummary summary;
   const StopOnSignals signals;
   try {
-    summary = sweep(file.spec, problem_of_flags(file.spec, file.fixed), options);
+    summary = sweep(file.spec, problem_of, options);
   } catch (...) {
-    // Rank 0 meets an invalid point too and reports it; otherwise its file stops before this
-    // rank's first missing row.
+    // Rank 0's file stops before this rank's first missing row.
     const EndCounts none{};
     MPI_Send(none.data(), 5, MPI_UINT64_T, 0, kEndTag, MPI_COMM_WORLD);
     throw;
@@ -280,7 +334,16 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
   MPI_Bcast(&first, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
   if (refused) throw RefusedByRankZero{refused};
   if (first == kRefused) throw RefusedByRankZero{};
-  if (!root) return run_share(mpi, file, f, first);
+  SweepOptions options = share_options(mpi, f, first);
+  const ProblemOfPoint problem_of = problem_of_flags(file.spec, file.fixed);
+  try {
+    check_points_together(mpi, file.spec, problem_of, options);
+  } catch (const InputError&) {
+    if (csv) csv->abandon_if_new_and_empty();  // rank 0's
+    throw;
+  }
+  options.points_checked = true;
+  if (!root) return run_share(file, problem_of, options);
 
   const bool terminal = isatty(STDERR_FILENO) == 1;
   OrderedWriter writer(*csv,
@@ -289,18 +352,12 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
                        total,
                        f.quiet ? nullptr : progress_line(terminal, first, total),
                        terminal ? 0.5 : 10.0);
-  SweepOptions options;
-  options.threads = mpi.threads_may_send() ? f.threads : 1;
-  options.first_point = first;
-  options.stride = static_cast<std::size_t>(mpi.size());
-  options.offset = 0;
-  options.stop = &interrupt_flag();
   options.on_row = [&writer](const SweepRow& row) { writer.own(row); };
   SweepSummary summary;
   {
     const StopOnSignals signals;
     try {
-      summary = sweep(file.spec, problem_of_flags(file.spec, file.fixed), options);
+      summary = sweep(file.spec, problem_of, options);
     } catch (const InvalidInput& e) {
       writer.collect_ends();
       csv->abandon_if_new_and_empty();
@@ -354,9 +411,9 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
 
 int run_sweep_mpi(const CLI::App& app, const SweepFlags& f, const OutputFlags& output) {
   const MpiSession mpi;
-  // Invalid input is met by every rank (the same spec, every point checked on each): rank 0
-  // says why, then all end together (a rank ending first would have mpirun stop rank 0 before
-  // it speaks).
+  // Invalid input: an invalid spec is met by every rank, an invalid point by the rank owning
+  // it, which tells rank 0; rank 0 says why, then all end together (a rank ending first would
+  // have mpirun stop rank 0 before it speaks).
   const auto together = [&mpi](const char* what) {
     if (mpi.rank() == 0 && what) fmt::print(stderr, "puncture: error: {}\n", what);
     MPI_Barrier(MPI_COMM_WORLD);
