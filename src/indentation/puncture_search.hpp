@@ -51,6 +51,12 @@ struct SwitchPoint {
   std::optional<ScaledSolution> held;
 };
 
+// "largest I1", "largest principal stretch" (whose name already says "largest"), ...
+inline std::string largest_measure(const FailureCriterion& criterion) {
+  const std::string name = measure_name(criterion);
+  return name.starts_with("largest") ? name : "largest " + name;
+}
+
 template <class Shooting>
 SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
   SwitchPoint out;
@@ -238,10 +244,10 @@ PuncturePrediction find_puncture_by(const Problem& p, const SolverOptions& optio
     const auto beyond = shooting.solve(stage, *f_puncture * (1.0 + 1e-9));
     out.status = Status::NotReached;
     out.message = fmt::format(
-        "no puncture found: in the {} stage the largest {} reaches only {:.8g} (critical {:g}) "
+        "no puncture found: in the {} stage the {} reaches only {:.8g} (critical {:g}) "
         "at {:.6g} N, where the solutions end{}",
         to_string(stage),
-        measure_name(criterion),
+        largest_measure(criterion),
         reached,
         critical,
         *f_puncture * scale,
@@ -255,9 +261,9 @@ PuncturePrediction find_puncture_by(const Problem& p, const SolverOptions& optio
   // met were 20 % and more.
   if (const double reached = measure(sol); !at_switch && reached > critical * (1.0 + 1e-3)) {
     out.message = fmt::format(
-        "the puncture search closed on a jump of the largest {} to {:.6g} (critical {:g}) at "
+        "the puncture search closed on a jump of the {} to {:.6g} (critical {:g}) at "
         "{:.6g} N: no state reaches the critical value continuously there",
-        measure_name(criterion),
+        largest_measure(criterion),
         reached,
         critical,
         *f_puncture * scale);
