@@ -81,7 +81,7 @@ def uniaxial_comparison(comparison, path=None, *, title=None):
             fitted = np.array(f.get("fitted_stress_mpa") or [])
             if len(fitted) != len(stretch):
                 continue  # not converged
-            colour = PARAMETER_COLOURS[k % len(PARAMETER_COLOURS)] if k < 4 else None
+            colour = f"C{k % 10}"  # matplotlib's ten distinct colours, one per law
             delta = ranking.get(f["law"], {}).get("delta_aic")
             label = f["law"] + (f" (ΔAIC {delta:.3g})" if delta is not None else
                                 f" ({f['status']})")
