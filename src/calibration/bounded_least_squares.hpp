@@ -79,6 +79,7 @@ struct LeastSquares {
   int iterations = 0;
   std::string message;          // Ceres' stop reason
   std::optional<int> on_bound;  // the parameter held on its bound at the optimum
+  std::vector<int> held;        // least_squares_with_active_set: every parameter held there
 };
 
 // One Ceres Levenberg-Marquardt run from x within the bounds, with parameter `held` (if any)
@@ -246,6 +247,7 @@ LeastSquares least_squares_with_active_set(const Functor& functor, const std::ve
     if (kept.size() == held.size()) {
       out.converged = true;
       if (!held.empty()) out.on_bound = held.front();
+      out.held = held;
       return out;
     }
     held = kept;

@@ -15,6 +15,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "calibration/bounded_least_squares.hpp"
@@ -582,9 +583,28 @@ UniaxialFit fit_law_model(const std::vector<UniaxialPoint>& points, FitLaw law,
   for (std::size_t i = 0; i < points.size(); ++i)
     fit.fitted_stress_mpa[i] = r[static_cast<Eigen::Index>(i)] + points[i].nominal_stress_mpa;
 
-  const auto cov = covariance(jac, fit.residual_sd_mpa * fit.residual_sd_mpa);
+  // The covariance of the parameters free at the optimum (those held on a bound have none: a
+  // held Ogden mu_p = 0 also leaves its alpha_p without effect, a zero column).
+  std::vector<Eigen::Index> free;
+  for (int i = 0; i < p; ++i)
+    if (std::find(solved.held.begin(), solved.held.end(), i) == solved.held.end())
+      free.push_back(i);
+  std::optional<Eigen::MatrixXd> cov;
+  if (!free.empty()) {
+    Eigen::MatrixXd jac_free(jac.rows(), static_cast<Eigen::Index>(free.size()));
+    for (std::size_t k = 0; k < free.size(); ++k)
+      jac_free.col(static_cast<Eigen::Index>(k)) = jac.col(free[k]);
+    if (const auto c = covariance(jac_free, fit.residual_sd_mpa * fit.residual_sd_mpa)) {
+      cov = Eigen::MatrixXd::Constant(p, p, std::numeric_limits<double>::quiet_NaN());
+      for (std::size_t a = 0; a < free.size(); ++a)
+        for (std::size_t b = 0; b < free.size(); ++b)
+          (*cov)(free[a], free[b]) =
+              (*c)(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+    }
+  }
   for (int i = 0; i < p; ++i) {
     const auto name = model.names()[static_cast<std::size_t>(i)];
+    const bool held = std::find(solved.held.begin(), solved.held.end(), i) != solved.held.end();
     FittedParameter fp{
         name, model.units()[static_cast<std::size_t>(i)], x[i], std::nullopt, false, ""};
     std::optional<double> se;
@@ -612,6 +632,7 @@ UniaxialFit fit_law_model(const std::vector<UniaxialPoint>& points, FitLaw law,
         fp.note = se ? "not identifiable: the value is within two standard errors of zero"
                      : "the Jacobian is singular: the data cannot separate the parameters";
     }
+    if (held) fp.note = "held on its bound at the optimum (no standard error): see the message";
     if (law == FitLaw::Gent && i == 1) {
       fit.inverse_j_lim = x[1];
       fit.inverse_j_lim_se = se;
