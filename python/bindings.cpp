@@ -8,6 +8,7 @@ PYBIND11_MODULE(_puncture, m) {
   m.attr("__version__") = PUNCTURE_VERSION;
   puncture::python::bind_enums(m);
   puncture::python::bind_problem(m);
+  puncture::python::bind_material_presets(m);
   puncture::python::bind_results(m);
   puncture::python::bind_solve(m);
   puncture::python::bind_calibration(m);

@@ -16,6 +16,7 @@ namespace py = pybind11;
 
 void bind_enums(py::module_& m);
 void bind_problem(py::module_& m);
+void bind_material_presets(py::module_& m);  // after bind_problem (Material)
 void bind_results(py::module_& m);
 void bind_solve(py::module_& m);
 void bind_calibration(py::module_& m);   // after bind_solve: raises its SolverError

@@ -45,6 +45,15 @@ struct UniaxialFitReport {
   UniaxialFit fit;  // converged
 };
 
+// `fit uniaxial --compare`: every law of the list fitted to the same data, ranked by AIC.
+struct UniaxialComparisonReport {
+  std::string source;
+  std::optional<SpecimenGeometry> specimen;
+  std::vector<UniaxialPoint> data;
+  StressTest test = StressTest::Uniaxial;
+  std::vector<UniaxialFit> fits;  // compare_uniaxial_fits: lowest AIC first
+};
+
 struct BandReport {
   Problem problem;  // the nominal parameters
   BandRanges ranges;
@@ -59,6 +68,7 @@ std::string calibration_text(const CriticalI1Report& report, Format format);
 std::string calibration_text(const FrictionReport& report, Format format);
 std::string calibration_text(const JLimReport& report, Format format);
 std::string calibration_text(const UniaxialFitReport& report, Format format);
+std::string calibration_text(const UniaxialComparisonReport& report, Format format);
 std::string calibration_text(const BandReport& report, Format format);
 
 }  // namespace puncture::cli

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -302,26 +303,72 @@ std::string run_band(const ProblemFlags& pf, const CalibrationFlags& f, Format f
   return calibration_text(report, format);
 }
 
-FitLaw fit_law_of(const std::string& material) {
-  if (material == "neo-hookean") return FitLaw::NeoHookean;
-  if (material == "mooney-rivlin") return FitLaw::MooneyRivlin;
-  if (material != "gent")
+// The starting Ogden exponents and term count of --ogden-alpha / --ogden-terms; refused for
+// another law, and when both are given with different counts.
+UniaxialFitOptions fit_options_of(const CLI::App& app, const ProblemFlags& pf,
+                                  const CalibrationFlags& f, bool ogden) {
+  UniaxialFitOptions options;
+  options.test = f.fit_test == "equibiaxial" ? StressTest::Equibiaxial : StressTest::Uniaxial;
+  const bool alpha = given(app, "--ogden-alpha"), terms = f.ogden_terms_option->count() > 0;
+  if (!ogden && (alpha || terms))
     throw InputError(fmt::format(
-        "--material: `fit uniaxial` fits gent, neo-hookean and mooney-rivlin; {} is not fitted "
-        "yet",
-        material));
-  return FitLaw::Gent;
+        "{}: the starting Ogden exponents apply only to fitting the ogden law (--material ogden "
+        "or --compare with ogden)",
+        alpha ? "--ogden-alpha" : "--ogden-terms"));
+  if (terms && (f.ogden_terms < 1 || f.ogden_terms > 3))
+    throw InputError(fmt::format("--ogden-terms: Ogden takes 1 to 3 terms, got {}", f.ogden_terms));
+  if (alpha && terms && static_cast<int>(pf.ogden_alpha.size()) != f.ogden_terms)
+    throw InputError(fmt::format(
+        "--ogden-alpha, --ogden-terms: {} starting exponents for {} terms; give one exponent "
+        "per term (or only one of the flags)",
+        pf.ogden_alpha.size(),
+        f.ogden_terms));
+  if (alpha) options.ogden_alpha_start = pf.ogden_alpha;
+  options.ogden_terms = f.ogden_terms;
+  return options;
+}
+
+// The laws of --compare: names, or "all".
+std::vector<FitLaw> compared_laws(const std::vector<std::string>& names) {
+  if (names.size() == 1 && names.front() == "all") return all_fit_laws();
+  std::vector<FitLaw> laws;
+  for (const auto& name : names) {
+    FitLaw law{};
+    try {
+      law = fit_law_of(name);
+    } catch (const InvalidInput& e) {
+      throw InputError("--compare: " + e.errors().front().message + ", or all");
+    }
+    if (std::find(laws.begin(), laws.end(), law) != laws.end())
+      throw InputError(fmt::format("--compare: {} is listed twice", name));
+    laws.push_back(law);
+  }
+  return laws;
 }
 
 std::string run_fit_uniaxial(const CLI::App& app, const ProblemFlags& pf, const CalibrationFlags& f,
                              Format format) {
-  for (const char* fitted : {"--shear-modulus", "--jlim", "--mr-alpha", "--yeoh"})
+  for (const char* fitted : {"--shear-modulus",
+                             "--jlim",
+                             "--mr-alpha",
+                             "--yeoh",
+                             "--ogden-mu",
+                             "--chain-segments",
+                             "--chain-stretch",
+                             "--i2-share",
+                             "--material-preset"})
     if (given(app, fitted))
       throw InputError(fmt::format(
           "{}: `fit uniaxial` determines the material's parameters; do not give it", fitted));
-  const auto law = fit_law_of(pf.material);
-  UniaxialFitReport report;
-  report.source = f.uniaxial_data;
+  const bool compare = f.compare_option->count() > 0;
+  if (compare && given(app, "--material"))
+    throw InputError(
+        "--compare, --material: --compare fits every law it lists; give one of them, not both");
+  const auto laws =
+      compare ? compared_laws(f.compare_laws) : std::vector<FitLaw>{fit_law_of(pf.material)};
+  const bool ogden = std::find(laws.begin(), laws.end(), FitLaw::Ogden) != laws.end();
+  const auto options = fit_options_of(app, pf, f, ogden);
+  std::optional<SpecimenGeometry> specimen;
   int specimen_flags = 0;
   for (const auto* option : f.specimen_options) specimen_flags += option->count() > 0 ? 1 : 0;
   if (specimen_flags == 3) {
@@ -329,25 +376,55 @@ std::string run_fit_uniaxial(const CLI::App& app, const ProblemFlags& pf, const 
     require_finite(
         f.specimen_thickness_mm, "--specimen-thickness", "> 0 mm", f.specimen_thickness_mm > 0.0);
     require_finite(f.gauge_length_mm, "--gauge-length", "> 0 mm", f.gauge_length_mm > 0.0);
-    report.specimen =
-        SpecimenGeometry{f.specimen_width_mm, f.specimen_thickness_mm, f.gauge_length_mm};
+    specimen = SpecimenGeometry{f.specimen_width_mm, f.specimen_thickness_mm, f.gauge_length_mm};
   } else if (specimen_flags > 0) {
     throw InputError(
         "--specimen-width, --specimen-thickness, --gauge-length: give all three (force and "
         "displacement data) or none (stretch and stress data)");
   }
-  const std::size_t parameters = law == FitLaw::NeoHookean ? 1 : 2;
+  // The most parameters of the laws fitted, and one more point for the residual's variance.
+  std::size_t parameters = 1;
+  for (const auto law : laws)
+    parameters = std::max<std::size_t>(
+        parameters,
+        law == FitLaw::Ogden
+            ? 2 * (options.ogden_alpha_start.empty() ? static_cast<std::size_t>(options.ogden_terms)
+                                                     : options.ogden_alpha_start.size())
+        : law == FitLaw::NeoHookean                      ? 1
+        : law == FitLaw::Yeoh || law == FitLaw::GentGent ? 3
+                                                         : 2);
+  std::vector<UniaxialPoint> data;
+  UniaxialFitReport report;
+  UniaxialComparisonReport comparison;
   try {
     const auto table = read_numeric_csv(f.uniaxial_data, parameters + 1);
-    report.data = uniaxial_points_from_table(table, report.specimen);
+    data = uniaxial_points_from_table(table, specimen);
     Progress progress("fit uniaxial");
     progress.note("least squares");
-    report.fit = fit_uniaxial(report.data, law);
+    if (compare)
+      comparison.fits = compare_uniaxial_fits(data, laws, options);
+    else
+      report.fit = fit_uniaxial(data, laws.front(), options);
   } catch (const CsvError& e) {
     throw InputError(e.what());
   } catch (const std::invalid_argument& e) {
     rethrow_as_input(e, f.uniaxial_data.c_str());
   }
+  if (compare) {
+    comparison.source = f.uniaxial_data;
+    comparison.specimen = specimen;
+    comparison.data = std::move(data);
+    comparison.test = options.test;
+    if (std::all_of(comparison.fits.begin(), comparison.fits.end(), [](const UniaxialFit& fit) {
+          return fit.status == Status::NoConvergence;
+        }))
+      throw SolveError("no law's fit converged: " + comparison.fits.front().message,
+                       Status::NoConvergence);
+    return calibration_text(comparison, format);
+  }
+  report.source = f.uniaxial_data;
+  report.specimen = specimen;
+  report.data = std::move(data);
   if (report.fit.status == Status::NoConvergence)
     throw SolveError("the fit did not converge: " + report.fit.message, report.fit.status);
   if (!report.fit.ok()) throw SolveError(report.fit.message, report.fit.status);
@@ -552,20 +629,29 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
   f.fit->require_subcommand(1);
   f.uniaxial = f.fit->add_subcommand(
       "uniaxial",
-      "Fit G (and J_lim for gent, alpha for mooney-rivlin) to a uniaxial tensile\n"
-      "test (paper §4.1, Fig. 11) by Levenberg-Marquardt; each parameter with its\n"
-      "standard error and whether the data determine it");
+      "Fit any law (--material) to a uniaxial tensile test (paper §4.1, Fig. 11) or an\n"
+      "equibiaxial one (--test) by bounded Levenberg-Marquardt: each parameter with its\n"
+      "standard error and whether the data determine it, their correlations and AIC/BIC;\n"
+      "--compare ranks several laws on the same data by AIC");
   f.uniaxial->footer(
       "The CSV file has a header and the columns stretch,nominal_stress_mpa, or\n"
       "force_n,displacement_mm with the specimen's --specimen-width, --specimen-thickness\n"
       "and --gauge-length [mm] (stretch = 1 + displacement / gauge length, nominal stress =\n"
-      "force / (width thickness)).  --material chooses the law.\n"
+      "force / (width thickness)).  --material chooses the law; its parameters:\n"
+      "  gent G, J_lim; neo-hookean G; mooney-rivlin G, alpha; yeoh C10, C20, C30 [MPa];\n"
+      "  ogden mu_p [MPa], alpha_p, N = 1 to 3 terms (--ogden-terms, or --ogden-alpha:\n"
+      "  the starting exponents); arruda-boyce G, N; gent-gent G, J_lim, beta.\n"
       "The parameters stay in the law's range (G > 0; mooney-rivlin 0 <= alpha <= 1;\n"
-      "gent 0 <= 1/J_lim < 1/(I1 - 3) at the largest stretch); a best fit on the edge of\n"
-      "that range means the law does not describe the data: exit 2, saying which edge.\n"
-      "Example:\n"
+      "gent, gent-gent 0 <= 1/J_lim < 1/(I1 - 3) at the largest stretch; arruda-boyce\n"
+      "3 N above it; yeoh C20, C30 >= 0; ogden mu_p alpha_p >= 0 and |alpha_p| >= 1, each\n"
+      "alpha_p keeping its starting sign; gent-gent 0 <= beta <= 1); a best fit on the\n"
+      "edge of that range means the law does not describe the data: exit 2, saying\n"
+      "which edge (--compare lists it instead).  AIC = n ln(RSS/n) + 2k with k the law's\n"
+      "parameters plus the variance; only differences between laws mean anything.\n"
+      "Examples:\n"
       "  puncture fit uniaxial tensile.csv --material gent --specimen-width 10 \\\n"
-      "      --specimen-thickness 0.2 --gauge-length 60");
+      "      --specimen-thickness 0.2 --gauge-length 60\n"
+      "  puncture fit uniaxial treloar.csv --compare all --plot laws.png");
   f.uniaxial->add_option("file", f.uniaxial_data, "CSV file of the tensile test")
       ->required()
       ->type_name("FILE");
@@ -579,6 +665,33 @@ void add_calibration_commands(CLI::App& app, CalibrationFlags& f) {
       f.uniaxial->add_option("--gauge-length", f.gauge_length_mm, "Initial gauge length [mm] (> 0)")
           ->group("Specimen (force and displacement data)"),
   };
+  f.uniaxial
+      ->add_option("--test",
+                   f.fit_test,
+                   "The test the data come from: uniaxial (lambda2 = lambda3 =\n"
+                   "lambda^-1/2) or equibiaxial (lambda1 = lambda2 = lambda, e.g. the\n"
+                   "pole of an inflated membrane); the stress is nominal [MPa]")
+      ->check(CLI::IsMember({"uniaxial", "equibiaxial"}))
+      ->capture_default_str()
+      ->group("Law");
+  f.ogden_terms_option =
+      f.uniaxial
+          ->add_option("--ogden-terms",
+                       f.ogden_terms,
+                       "Ogden terms N to fit (1 to 3; default 3), from the exponents\n"
+                       "{2}, {3,-2} or Ogden's {1.3,5,-2}; --ogden-alpha A1,...,AN\n"
+                       "gives other starting exponents instead")
+          ->group("Law");
+  f.compare_option =
+      f.uniaxial
+          ->add_option("--compare",
+                       f.compare_laws,
+                       "Fit each law of a comma-separated list (or all) to the data and\n"
+                       "rank them by AIC: n, k, RSS [MPa^2], AIC, delta AIC, AICc, BIC\n"
+                       "(instead of --material)")
+          ->delimiter(',')
+          ->type_name("LAWS")
+          ->group("Law");
   add_fit_curve_command(*f.fit, f.curve);
 }
 

@@ -55,6 +55,11 @@ struct CalibrationFlags {
   double specimen_thickness_mm = 0.0;
   double gauge_length_mm = 0.0;
   std::vector<CLI::Option*> specimen_options;
+  std::string fit_test = "uniaxial";  // or equibiaxial: which nominal stress the data are
+  int ogden_terms = 3;
+  CLI::Option* ogden_terms_option = nullptr;
+  std::vector<std::string> compare_laws;  // --compare: law names, or "all"
+  CLI::Option* compare_option = nullptr;
 
   FitCurveFlags curve;  // fit curve
 

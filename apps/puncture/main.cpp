@@ -65,7 +65,8 @@ constexpr const char* kFooter =
 
 // The plot_cli.py figure of the parsed calibration, or none.
 const char* calibration_plot_kind(const puncture::cli::CalibrationFlags& f) {
-  if (f.uniaxial->parsed()) return "uniaxial-fit";
+  if (f.uniaxial->parsed())
+    return f.compare_option->count() > 0 ? "uniaxial-compare" : "uniaxial-fit";
   if (f.band->parsed()) return "band";
   if (f.jlim->parsed()) return "jlim";
   return nullptr;
@@ -108,7 +109,8 @@ int main(int argc, char** argv) {
                        "Also draw the result to FILE (.png, .svg or .pdf) with matplotlib:\n"
                        "curve: force against depth, stages shaded, puncture marked;\n"
                        "state: deformed profile, stretches and I1 along the radius;\n"
-                       "fit uniaxial: data, fit and residuals; fit curve: the\n"
+                       "fit uniaxial: data, fit and residuals (with --compare: every\n"
+                       "law's); fit curve: the\n"
                        "records, the fitted curves and residuals; calibrate band:\n"
                        "the ranges and puncture points; calibrate jlim: force\n"
                        "against J_lim")

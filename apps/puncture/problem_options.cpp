@@ -11,6 +11,7 @@
 #include "cli_error.hpp"
 #include "criterion_spec.hpp"
 #include "parameter_flags.hpp"
+#include "puncture/material_presets.hpp"
 #include "stick_spec.hpp"
 
 namespace puncture::cli {
@@ -63,9 +64,37 @@ ArrudaBoyce arruda_boyce_of(const ProblemFlags& f, std::vector<std::string>& err
   return ArrudaBoyce{l * l};
 }
 
-// The material the flags describe: --shear-modulus and the law's flags, or --yeoh's C10, C20,
-// C30 (G = 2 C10), or Ogden's lists.
+// A preset's material: it sets the law and every parameter, so a material flag given as well
+// contradicts it.
+Material preset_of(const ProblemFlags& f, std::vector<std::string>& errors) {
+  for (const auto* option : {f.material_option,
+                             f.shear_modulus_option,
+                             f.j_lim_option,
+                             f.mr_alpha_option,
+                             f.yeoh_option,
+                             f.ogden_mu_option,
+                             f.ogden_alpha_option,
+                             f.chain_segments_option,
+                             f.chain_stretch_option,
+                             f.gent_gent_beta_option})
+    if (given(option))
+      errors.push_back(fmt::format(
+          "--material-preset, {}: the preset {} sets the law and its parameters; give one of "
+          "them, not both",
+          option->get_name(),
+          f.material_preset));
+  try {
+    return material_preset(f.material_preset).material;
+  } catch (const InvalidInput& e) {
+    errors.push_back("--material-preset: " + e.errors().front().message);
+    return {};
+  }
+}
+
+// The material the flags describe: a preset, or --shear-modulus and the law's flags, or
+// --yeoh's C10, C20, C30 (G = 2 C10), or Ogden's lists.
 Material material_of(const ProblemFlags& f, std::vector<std::string>& errors) {
+  if (given(f.material_preset_option)) return preset_of(f, errors);
   if (f.material != "gent" && f.material != "gent-gent" && given(f.j_lim_option))
     errors.push_back(
         fmt::format("--jlim: applies only to --material gent and gent-gent, not {}", f.material));
@@ -177,17 +206,31 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                                           "Initial shear modulus G of the rubber [MPa] (> 0)")
                                ->group(kMaterial)
                                ->capture_default_str();
-  app.add_option("--material",
-                 f.material,
-                 "Strain-energy law: gent (the paper's, locks at I1 = 3 + J_lim),\n"
-                 "neo-hookean, mooney-rivlin (with --mr-alpha), yeoh (with\n"
-                 "--yeoh), ogden (with --ogden-mu, --ogden-alpha), arruda-boyce\n"
-                 "(with --chain-segments or --chain-stretch; locks at I1 = 3 N)\n"
-                 "or gent-gent (Gent plus a ln(I2/3) term: --jlim, --i2-share)")
-      ->group(kMaterial)
-      ->check(CLI::IsMember(
-          {"gent", "neo-hookean", "mooney-rivlin", "yeoh", "ogden", "arruda-boyce", "gent-gent"}))
-      ->capture_default_str();
+  f.material_option =
+      app.add_option("--material",
+                     f.material,
+                     "Strain-energy law: gent (the paper's, locks at I1 = 3 + J_lim),\n"
+                     "neo-hookean, mooney-rivlin (with --mr-alpha), yeoh (with\n"
+                     "--yeoh), ogden (with --ogden-mu, --ogden-alpha), arruda-boyce\n"
+                     "(with --chain-segments or --chain-stretch; locks at I1 = 3 N)\n"
+                     "or gent-gent (Gent plus a ln(I2/3) term: --jlim, --i2-share)")
+          ->group(kMaterial)
+          ->check(CLI::IsMember({"gent",
+                                 "neo-hookean",
+                                 "mooney-rivlin",
+                                 "yeoh",
+                                 "ogden",
+                                 "arruda-boyce",
+                                 "gent-gent"}))
+          ->capture_default_str();
+  std::string presets =
+      "A published material: law and parameters at once (no other\n"
+      "material flag; sources in docs/materials.md):";
+  for (const auto& preset : material_presets())
+    presets += fmt::format("\n  {}: {}", preset.name, preset.description);
+  f.material_preset_option = app.add_option("--material-preset", f.material_preset, presets)
+                                 ->group(kMaterial)
+                                 ->type_name("NAME");
   f.j_lim_option = app.add_option("--jlim",
                                   f.j_lim,
                                   "Gent locking parameter J_lim: the largest I1 - 3\n"

@@ -20,6 +20,7 @@ struct ProblemFlags {
   double pressure_mpa = defaults.preload.pressure_mpa;
   double shear_modulus_mpa = defaults.material.shear_modulus_mpa;
   std::string material = "gent";
+  std::string material_preset;  // a named published material (material_presets.hpp), or empty
   double j_lim = Gent{}.j_lim;
   double mr_alpha = MooneyRivlin{}.alpha;
   std::vector<double> yeoh_mpa;      // C10, C20, C30 [MPa]
@@ -33,6 +34,8 @@ struct ProblemFlags {
   std::vector<std::string> criteria;  // --criterion NAME:VALUE items (criterion_spec.hpp)
   std::string stick = "none";
   std::string part_two_equation = "ring-balance";
+  CLI::Option* material_option = nullptr;
+  CLI::Option* material_preset_option = nullptr;
   CLI::Option* j_lim_option = nullptr;
   CLI::Option* mr_alpha_option = nullptr;
   CLI::Option* shear_modulus_option = nullptr;

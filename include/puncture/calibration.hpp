@@ -169,9 +169,11 @@ JLimEstimate j_lim_from_puncture_force(const Problem& problem, double puncture_f
 
 // ---------------------------------------------------------------------------------------------
 // Least-squares fit of a uniaxial tensile test (§4.1, Fig. 11): nominal stress
-// P = G s_uni(lambda) (uniaxial_stress), by Eigen's Levenberg-Marquardt (MINPACK lmder).
+// P = G s_uni(lambda) (uniaxial_stress), by Ceres' bounded Levenberg-Marquardt; or of an
+// equibiaxial test, P = G s_eq(lambda) (equibiaxial_stress).  Every law is fitted.
 // Gent is fitted in (G, c = 1/J_lim), which is linear near the neo-Hookean c = 0, so data that
-// never reach the stiffening give c ~ 0 with a finite standard error instead of a runaway J_lim.
+// never reach the stiffening give c ~ 0 with a finite standard error instead of a runaway J_lim;
+// Gent-Gent likewise, and Arruda-Boyce in (G, 1/N).
 
 struct UniaxialPoint {
   double stretch = 1.0;             // lambda = current / initial gauge length
@@ -194,10 +196,37 @@ std::vector<UniaxialPoint> uniaxial_points(const std::vector<double>& force_n,
 std::vector<UniaxialPoint> uniaxial_points_from_table(
     const CsvTable& table, const std::optional<SpecimenGeometry>& specimen);
 
-enum class FitLaw { Gent, NeoHookean, MooneyRivlin };
+enum class FitLaw { Gent, NeoHookean, MooneyRivlin, Yeoh, Ogden, ArrudaBoyce, GentGent };
+// Every law, in that order.
+std::vector<FitLaw> all_fit_laws();
+
+// The homogeneous test the data come from: which nominal stress of the law they are.
+enum class StressTest {
+  Uniaxial,     // lambda2 = lambda3 = lambda^-1/2: uniaxial_stress
+  Equibiaxial,  // lambda1 = lambda2 = lambda, lambda3 = lambda^-2: equibiaxial_stress
+};
+
+// Information criteria of a least-squares fit with Gaussian errors of one unknown variance
+// (Burnham & Anderson 2002, §2.2): with n points, the sum of squared residuals RSS and k
+// estimated parameters (the law's p plus the variance, k = p + 1),
+//   AIC = n ln(RSS / n) + 2 k,  AICc = AIC + 2 k (k + 1) / (n - k - 1),  BIC = n ln(RSS / n) + k ln
+//   n.
+// Only differences between fits of the same data mean anything: the lowest is preferred.
+struct InformationCriteria {
+  int points = 0;         // n
+  int parameters = 0;     // k = the law's parameters + 1
+  double rss_mpa2 = 0.0;  // sum of squared residuals [MPa^2]
+  double aic = 0.0;
+  std::optional<double> aicc;  // empty when n <= k + 1
+  double bic = 0.0;
+};
+// Throws std::invalid_argument for n < 1, a law's parameter count < 0 or an RSS that is not a
+// finite number > 0 (an exact fit has no information criterion: ln 0).
+InformationCriteria information_criteria(int points, int law_parameters, double rss_mpa2);
 
 struct FittedParameter {
-  std::string name;                      // "G", "J_lim", "alpha"
+  std::string name;                      // "G", "J_lim", "alpha", "C10", "mu_1", "alpha_1", "N",
+                                         // "beta"
   std::string unit;                      // "MPa" or "" (dimensionless)
   std::optional<double> value;           // empty when the data do not give one (J_lim, c <= 0)
   std::optional<double> standard_error;  // sigma sqrt((J^T J)^-1)_ii; empty when singular
@@ -213,10 +242,18 @@ struct FittedParameter {
 // optimiser's stop reason).
 struct UniaxialFit : Outcome {
   FitLaw law = FitLaw::Gent;
+  StressTest test = StressTest::Uniaxial;
   // The best fit as a material the solver accepts; empty when it is not one (Gent with
   // c = 1/J_lim <= 0, Mooney-Rivlin alpha outside [0, 1), G <= 0).
   std::optional<Material> material;
-  std::vector<FittedParameter> parameters;  // G first
+  // G first (Yeoh: C10, C20, C30 [MPa]; Ogden: mu_1..mu_N [MPa], then alpha_1..alpha_N).
+  std::vector<FittedParameter> parameters;
+  // Correlation coefficients between `parameters` (row i, column j), from the covariance
+  // sigma^2 (J^T J)^-1 (for J_lim = 1/c and N = 1/(1/N) to first order: the sign of c's
+  // correlations turns).  Empty when J^T J is singular.
+  std::vector<std::vector<double>> correlation;
+  // AIC, AICc, BIC of the fit (empty for an exact fit, RSS = 0).
+  std::optional<InformationCriteria> information;
   // Gent: the fitted c = 1/J_lim and its standard error, and the lower bound of J_lim at two
   // standard errors, 1 / (c + 2 se_c), when c + 2 se_c > 0.
   std::optional<double> inverse_j_lim;
@@ -234,7 +271,13 @@ struct UniaxialFit : Outcome {
 };
 
 struct UniaxialFitOptions {
-  int max_iterations = 500;  // Levenberg-Marquardt steps (a fit takes 5-30)
+  int max_iterations = 500;                // Levenberg-Marquardt steps (a fit takes 5-30)
+  StressTest test = StressTest::Uniaxial;  // the test the data are the nominal stress of
+  // Ogden: the starting exponents alpha_p; their count is the number of terms N (1 to 3), and
+  // each alpha_p keeps its sign (mu_p alpha_p > 0, |alpha_p| >= 1: the law's conditions).
+  // Empty: ogden_terms terms from {2}, {3, -2} or Ogden's {1.3, 5, -2}.
+  std::vector<double> ogden_alpha_start{};
+  int ogden_terms = 3;  // 1 to 3; used when ogden_alpha_start is empty
 };
 
 // Needs more points than parameters, stretches > 0 and a positive stress somewhere; throws
@@ -243,8 +286,18 @@ struct UniaxialFitOptions {
 // best fit on one of these bounds is Status::OnBound, its message says which and why.
 UniaxialFit fit_uniaxial(const std::vector<UniaxialPoint>& data, FitLaw law,
                          const UniaxialFitOptions& options = {});
+// Every law of `laws` fitted to the same data, ranked by AIC (lowest first; fits without one,
+// not converged or exact, last, in the order given).  Throws as fit_uniaxial for data that no law
+// of the list can be fitted to (too few points for the one with most parameters).
+std::vector<UniaxialFit> compare_uniaxial_fits(const std::vector<UniaxialPoint>& data,
+                                               const std::vector<FitLaw>& laws,
+                                               const UniaxialFitOptions& options = {});
 
 std::string to_string(FitLaw law);
+std::string to_string(StressTest test);
+// The law of a name as to_string writes it ("gent", "ogden", ...); throws InvalidInput ("law")
+// naming the laws for another.
+FitLaw fit_law_of(const std::string& name);
 std::string to_string(HoleMethod method);
 
 }  // namespace puncture

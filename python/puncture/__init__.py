@@ -11,8 +11,9 @@ moduli and stresses in MPa.
     puncture.plots.loading_curve(curve, "curve.png")  # matplotlib figures (puncture.plots)
 
 The calibrations of the CLI's `calibrate` and `fit` commands: critical_i1_from_inflation,
-friction_from_hole, j_lim_from_puncture_force, fit_uniaxial (with uniaxial_points and
-uniaxial_points_from_csv), fit_curves (force-depth records, CurveTest, read_force_depth_record),
+friction_from_hole, j_lim_from_puncture_force, fit_uniaxial (every law, uniaxial or
+equibiaxial data; with uniaxial_points and uniaxial_points_from_csv), compare_uniaxial_fits
+(laws ranked by AIC), material_presets (published materials with their sources), fit_curves (force-depth records, CurveTest, read_force_depth_record),
 and puncture_band, the puncture force over the parameters' intervals:
 
     band = puncture.puncture_band(problem, critical_i1=puncture.plus_minus(95.2, 4.8))
@@ -83,8 +84,12 @@ from ._puncture import (
     StickRule,
     StickSlipSwitch,
     UniaxialFit,
+    InformationCriteria,
+    MaterialPreset,
+    StressTest,
     __version__,
     burst_tests_from_csv,
+    compare_uniaxial_fits,
     critical_i1_from_inflation,
     documented_depth_direction,
     documented_force_direction,
@@ -93,6 +98,9 @@ from ._puncture import (
     first_invariant,
     fit_uniaxial,
     force_scale_n,
+    information_criteria,
+    material_preset,
+    material_presets,
     friction_from_hole,
     j_lim_from_puncture_force,
     loading_curve,
@@ -155,7 +163,11 @@ __all__ = [
     "StickRule",
     "StickSlipSwitch",
     "UniaxialFit",
+    "InformationCriteria",
+    "MaterialPreset",
+    "StressTest",
     "burst_tests_from_csv",
+    "compare_uniaxial_fits",
     "critical_i1_from_inflation",
     "documented_depth_direction",
     "documented_force_direction",
@@ -164,6 +176,9 @@ __all__ = [
     "first_invariant",
     "fit_uniaxial",
     "force_scale_n",
+    "information_criteria",
+    "material_preset",
+    "material_presets",
     "friction_from_hole",
     "j_lim_from_puncture_force",
     "loading_curve",

@@ -55,9 +55,47 @@ def uniaxial_fit(fit, path=None, *, title=None):
         bottom.plot(stretch, residual, "o", color="black", ms=4)
         bottom.set_ylabel("fit − data [MPa]")
         bottom.set_xlabel("stretch λ")
+        test = f.get("test", "uniaxial")
         fig.suptitle(title if title is not None else
-                     f"Uniaxial tensile test fitted with {f['law']} "
+                     f"{test.capitalize()} test fitted with {f['law']} "
                      f"({len(points)} points, rms residual {f['rms_residual_mpa']:.3g} MPa)")
+    return _finish(fig, path)
+
+
+def uniaxial_comparison(comparison, path=None, *, title=None):
+    """`puncture fit uniaxial --compare LAWS --format json`: the measured nominal stress and
+    every converged law's fit against the stretch (top, legend ranked by AIC with delta AIC),
+    and each law's residuals (bottom)."""
+    _check_path(path)
+    points = comparison["points"]
+    stretch = np.array([p["stretch"] for p in points])
+    measured = np.array([p["nominal_stress_mpa"] for p in points])
+    order = np.argsort(stretch)
+    ranking = {r["law"]: r for r in comparison["ranking"]}
+    with matplotlib.rc_context(STYLE):
+        fig = Figure(figsize=(8.0, 7.0), layout="constrained")
+        top, bottom = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [2.2, 1]})
+        top.plot(stretch, measured, "o", color="black", ms=5, mfc="white", label="measured")
+        bottom.axhline(0.0, color="#555555", lw=0.8)
+        for k, f in enumerate(comparison["fits"]):
+            fitted = np.array(f.get("fitted_stress_mpa") or [])
+            if len(fitted) != len(stretch):
+                continue  # not converged
+            colour = f"C{k % 10}"  # matplotlib's ten distinct colours, one per law
+            delta = ranking.get(f["law"], {}).get("delta_aic")
+            label = f["law"] + (f" (ΔAIC {delta:.3g})" if delta is not None else
+                                f" ({f['status']})")
+            top.plot(stretch[order], fitted[order], lw=1.5, color=colour, label=label)
+            bottom.plot(stretch[order], (fitted - measured)[order], "o-", ms=3, lw=0.8,
+                        color=colour)
+        top.set_ylabel("nominal stress P [MPa]")
+        top.legend(loc="upper left", title="ranked by AIC")
+        bottom.set_ylabel("fit − data [MPa]")
+        bottom.set_xlabel("stretch λ")
+        test = comparison["inputs"].get("test", "uniaxial")
+        fig.suptitle(title if title is not None else
+                     f"{test.capitalize()} test: {len(comparison['fits'])} laws compared "
+                     f"({len(points)} points)")
     return _finish(fig, path)
 
 

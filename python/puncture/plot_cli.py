@@ -4,6 +4,8 @@
     python3 plot_cli.py state   STATE.json   OUT.png|svg|pdf   (puncture state --format json)
     python3 plot_cli.py figures FIGURES.json OUT_DIR           (puncture figures)
     python3 plot_cli.py uniaxial-fit FIT.json OUT.png|svg|pdf  (puncture fit uniaxial --format json)
+    python3 plot_cli.py uniaxial-compare FITS.json OUT.png|svg|pdf
+                                                  (puncture fit uniaxial --compare ... --format json)
     python3 plot_cli.py band  BAND.json  OUT.png|svg|pdf       (puncture calibrate band ...)
     python3 plot_cli.py jlim  JLIM.json  OUT.png|svg|pdf       (puncture calibrate jlim ...)
     python3 plot_cli.py sweep   MAP.json     OUT.png|svg|pdf   (puncture sweep --plot)
@@ -16,7 +18,8 @@ Needs numpy and matplotlib, not the compiled extension.  Exit status: 0 drawn, 2
 import json
 import sys
 
-KINDS = ("curve", "state", "figures", "uniaxial-fit", "fit-curve", "band", "jlim", "sweep")
+KINDS = ("curve", "state", "figures", "uniaxial-fit", "uniaxial-compare", "fit-curve", "band",
+         "jlim", "sweep")
 EXIT_USAGE = 2
 EXIT_MISSING_MODULE = 3
 
@@ -59,6 +62,8 @@ def main(argv=None):
             plots.state_overview(data, target)
         elif kind == "uniaxial-fit":
             calibration_plots.uniaxial_fit(data, target)
+        elif kind == "uniaxial-compare":
+            calibration_plots.uniaxial_comparison(data, target)
         elif kind == "band":
             calibration_plots.puncture_band(data, target)
         elif kind == "jlim":

@@ -289,6 +289,90 @@ def test_uniaxial_errors_match_cli(cli):
         pu.fit_uniaxial([1.0, 1.1], [0.0, 0.01], "gent")  # fewer points than 2 parameters + 1
 
 
+# ----- every law, the comparison by AIC, the presets ------------------------------------------
+
+TRELOAR = Path(__file__).resolve().parents[2] / "tests" / "data" / "treloar_1944_uniaxial.csv"
+
+
+@pytest.mark.parametrize("law,material,values", [
+    ("yeoh", pu.Material.yeoh(c10_mpa=0.03, c20_mpa=0.002, c30_mpa=1e-4), [0.03, 0.002, 1e-4]),
+    ("arruda-boyce", pu.Material(shear_modulus_mpa=0.06, law=pu.ArrudaBoyce(8.0)), [0.06, 8.0]),
+    ("gent-gent", pu.Material(shear_modulus_mpa=0.06, law=pu.GentGent(40.0, 0.1)),
+     [0.06, 40.0, 0.1]),
+    (pu.FitLaw.Ogden, pu.Material.ogden(mu_mpa=[0.05, -0.01], alpha=[2.5, -1.5]),
+     [0.05, -0.01, 2.5, -1.5]),
+])
+@pytest.mark.parametrize("test", ["uniaxial", "equibiaxial"])
+def test_every_law_recovered_in_both_tests(law, material, values, test):
+    stretch = np.linspace(1.1, 4.0 if test == "uniaxial" else 2.2, 30)
+    stress = (material.uniaxial_stress_mpa(stretch) if test == "uniaxial"
+              else material.equibiaxial_stress_mpa(stretch))
+    fit = pu.fit_uniaxial(stretch, stress, law, test=test, ogden_alpha=[3.0, -2.0])
+    assert fit.test.token == test
+    # Exact data: the generating parameters, to the optimiser's tolerance (1e-8 in C++).
+    assert [p.value for p in fit.parameters] == pytest.approx(values, rel=1e-7)
+    assert len(fit.correlation) == len(values)
+
+
+def test_ogden_terms_and_bad_exponents():
+    stretch = np.linspace(1.1, 3.0, 20)
+    stress = pu.Material.neo_hookean(shear_modulus_mpa=0.1).uniaxial_stress_mpa(stretch)
+    one = pu.fit_uniaxial(stretch, stress, "ogden", ogden_terms=1)
+    assert [p.name for p in one.parameters] == ["mu_1", "alpha_1"]
+    assert one.parameter("alpha_1").value == pytest.approx(2.0, rel=1e-7)  # neo-Hookean
+    with pytest.raises(ValueError, match="ogden_alpha_start"):
+        pu.fit_uniaxial(stretch, stress, "ogden", ogden_alpha=[0.5])
+    with pytest.raises(ValueError, match="test: expected"):
+        pu.fit_uniaxial(stretch, stress, "gent", test="biaxial")
+
+
+def test_information_criteria_by_hand():
+    c = pu.information_criteria(10, 2, 0.5)
+    n_log = 10 * math.log(0.05)
+    assert c.parameters == 3
+    assert c.aic == pytest.approx(n_log + 6, rel=1e-14)
+    assert c.aicc == pytest.approx(n_log + 6 + 4, rel=1e-14)
+    assert c.bic == pytest.approx(n_log + 3 * math.log(10), rel=1e-14)
+    with pytest.raises(ValueError):
+        pu.information_criteria(10, 2, 0.0)
+
+
+def test_treloar_compare_matches_cli(cli):
+    stretch, stress = pu.uniaxial_points_from_csv(str(TRELOAR))
+    ranked = pu.compare_uniaxial_fits(stretch, stress, ["neo-hookean", "ogden", "yeoh"])
+    assert ranked[0].law == pu.FitLaw.Ogden
+    assert ranked[-1].law == pu.FitLaw.NeoHookean
+    aics = [f.information.aic for f in ranked]
+    assert aics == sorted(aics)
+    rc, out, err = cli.run("fit", "uniaxial", str(TRELOAR), "--compare",
+                           "neo-hookean,ogden,yeoh", "--format", "json")
+    assert rc == 0, err
+    import json
+    data = json.loads(out)
+    for fit, row in zip(ranked, data["ranking"]):
+        assert row["law"] == fit.law.token
+        assert same(row["aic"], fit.information.aic)
+    for fit, full in zip(ranked, data["fits"]):
+        for p, q in zip(fit.parameters, full["parameters"]):
+            assert same(p.value, q["value"]) and same(p.standard_error, q["standard_error"])
+
+
+def test_presets():
+    names = [p.name for p in pu.material_presets()]
+    assert names == ["liu2018-silicone", "ogden-1972-treloar"]
+    ogden = pu.material_preset("ogden-1972-treloar")
+    assert "doi:10.1098/rspa.1972.0026" in ogden.source
+    stretch = np.array([1.5, 3.0, 6.0])
+    mu = np.array([6.3, 0.012, -0.1]) * 0.0980665  # kgf/cm^2 -> MPa
+    alpha = np.array([1.3, 5.0, -2.0])
+    by_hand = sum(m * (stretch ** (a - 1) - stretch ** (-a / 2 - 1)) for m, a in zip(mu, alpha))
+    assert ogden.material.uniaxial_stress_mpa(stretch) == pytest.approx(by_hand, rel=1e-13)
+    silicone = pu.material_preset("liu2018-silicone").material
+    assert silicone.shear_modulus_mpa == 0.06 and silicone.j_lim == 125.0
+    with pytest.raises(ValueError, match="preset: unknown material preset 'rubber'"):
+        pu.material_preset("rubber")
+
+
 # ----- the puncture band --------------------------------------------------------------------
 
 def test_band_matches_cli(cli):

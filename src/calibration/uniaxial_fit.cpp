@@ -10,19 +10,26 @@
 // accepts (Mooney-Rivlin alpha = -5e4 on stiffening data); a best fit on a bound is reported as
 // Status::OnBound.  The standard errors are sigma sqrt(diag((J^T J)^-1)) at an interior
 // optimum, sigma^2 = SSR / (n - p).
-#include <ceres/ceres.h>
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
+#include "calibration/bounded_least_squares.hpp"
+#include "calibration/law_fit_model.hpp"
 #include "puncture/calibration.hpp"
 
 namespace puncture {
 
 namespace {
+
+using detail::Bound;
+using detail::covariance;
+using detail::least_squares_in_range;
+using detail::on_bound;
 
 struct Data {
   Eigen::VectorXd stretch, stress, g, k, inv;  // lambda, P, lambda - lambda^-2, I1 - 3, 1/lambda
@@ -46,7 +53,19 @@ Data prepare(const std::vector<UniaxialPoint>& points) {
   return d;
 }
 
-int parameter_count(FitLaw law) { return law == FitLaw::NeoHookean ? 1 : 2; }
+// The closed-form laws' parameters; LawFitModel's for the others (Ogden: 2 per term).
+int parameter_count(FitLaw law) {
+  switch (law) {
+    case FitLaw::NeoHookean:
+      return 1;
+    case FitLaw::Yeoh:
+    case FitLaw::GentGent:
+      return 3;
+    case FitLaw::Ogden:  // 2 N, counted by the caller
+    default:
+      return 2;
+  }
+}
 
 // Residuals and their Jacobian; false where Gent would lock (the minimiser then shortens the step).
 struct Residuals {
@@ -72,6 +91,8 @@ struct Residuals {
         if (locks(x[1])) return false;
         r = (G * d.g.array() / (1.0 - x[1] * d.k.array())).matrix() - d.stress;
         break;
+      default:  // the other laws are LawFitModel's
+        return false;
     }
     return true;
   }
@@ -92,39 +113,10 @@ struct Residuals {
         jac.col(1) = (x[0] * d.g.array() * d.k.array() / denom.square()).matrix();
         break;
       }
+      default:
+        break;
     }
   }
-};
-
-// The residuals as one Ceres residual block over the parameter block (G, alpha or c).
-class StressResiduals : public ceres::CostFunction {
- public:
-  explicit StressResiduals(const Residuals& residuals) : residuals_(residuals) {
-    set_num_residuals(residuals.values());
-    mutable_parameter_block_sizes()->push_back(residuals.inputs());
-  }
-  bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override {
-    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(parameters[0], residuals_.inputs());
-    Eigen::VectorXd r(residuals_.values());
-    if (!residuals_(x, r)) return false;
-    Eigen::Map<Eigen::VectorXd>(residuals, residuals_.values()) = r;
-    if (jacobians && jacobians[0]) {
-      Eigen::MatrixXd jac;
-      residuals_.df(x, jac);
-      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-          jacobians[0], residuals_.values(), residuals_.inputs()) = jac;
-    }
-    return true;
-  }
-
- private:
-  const Residuals& residuals_;
-};
-
-// The law's validity range as bounds of each parameter, and its scale (for "on the bound").
-struct Bound {
-  double lower, upper, scale;
 };
 
 std::vector<Bound> validity_bounds(const Data& d, FitLaw law, double g_scale) {
@@ -138,17 +130,6 @@ std::vector<Bound> validity_bounds(const Data& d, FitLaw law, double g_scale) {
     bounds.push_back({0.0, (1.0 - 1e-6) * c_lock, c_lock});
   }
   return bounds;
-}
-
-// The index of the first parameter that ended on one of its bounds, if any.
-std::optional<int> on_bound(const Eigen::VectorXd& x, const std::vector<Bound>& bounds) {
-  for (int i = 0; i < static_cast<int>(bounds.size()); ++i) {
-    const double tol = 1e-9 * bounds[static_cast<std::size_t>(i)].scale;
-    if (x[i] <= bounds[static_cast<std::size_t>(i)].lower + tol ||
-        x[i] >= bounds[static_cast<std::size_t>(i)].upper - tol)
-      return i;
-  }
-  return std::nullopt;
 }
 
 // A starting point from linear least squares: the neo-Hookean G; for Mooney-Rivlin the exact
@@ -184,99 +165,60 @@ Eigen::VectorXd start(const Data& d, FitLaw law) {
   return x;
 }
 
-// sigma^2 (J^T J)^-1 through the SVD of the column-scaled Jacobian; empty when J is singular.
-std::optional<Eigen::MatrixXd> covariance(const Eigen::MatrixXd& jac, double sigma2) {
-  const Eigen::VectorXd norms = jac.colwise().norm();
-  if ((norms.array() == 0.0).any() || !norms.allFinite()) return std::nullopt;
-  const Eigen::MatrixXd scaled = jac * norms.cwiseInverse().asDiagonal();
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeThinV);
-  const auto& s = svd.singularValues();
-  if (!(s.minCoeff() > 1e-10 * s.maxCoeff())) return std::nullopt;
-  const Eigen::MatrixXd v = svd.matrixV();
-  const Eigen::MatrixXd inv_scaled =
-      v * s.array().square().inverse().matrix().asDiagonal() * v.transpose();
-  return sigma2 * norms.cwiseInverse().asDiagonal() * inv_scaled *
-         norms.cwiseInverse().asDiagonal();
-}
-
-struct LeastSquares {
-  bool converged = false;
-  int iterations = 0;
-  std::string message;          // Ceres' stop reason
-  std::optional<int> on_bound;  // the parameter held on its bound at the optimum
-};
-
-// One Ceres Levenberg-Marquardt run from x within the bounds, with parameter `held` (if any)
-// kept at its value.
-bool run_levenberg_marquardt(const Residuals& functor, const std::vector<Bound>& bounds,
-                             Eigen::VectorXd& x, std::optional<int> held, int max_iterations,
-                             LeastSquares& out) {
-  ceres::Problem problem;
-  problem.AddResidualBlock(new StressResiduals(functor), nullptr, x.data());
-  if (held) {
-    if (x.size() == 1) return true;  // nothing left to fit
-    problem.SetManifold(x.data(), new ceres::SubsetManifold(static_cast<int>(x.size()), {*held}));
-  }
-  for (int i = 0; i < x.size(); ++i) {
-    problem.SetParameterLowerBound(x.data(), i, bounds[static_cast<std::size_t>(i)].lower);
-    if (std::isfinite(bounds[static_cast<std::size_t>(i)].upper))
-      problem.SetParameterUpperBound(x.data(), i, bounds[static_cast<std::size_t>(i)].upper);
-  }
-  ceres::Solver::Options options;
-  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = max_iterations;
-  // Stop on the step only (relative 1e-14): the cost is flat at the optimum, so a test on its
-  // decrease stops early (1e-8 short of the optimum in 1/J_lim on a noisy test).
-  options.function_tolerance = 1e-30;
-  options.parameter_tolerance = 1e-14;
-  options.gradient_tolerance = 1e-30;
-  options.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
-  out.iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
-  out.message = summary.message;
-  return summary.termination_type == ceres::CONVERGENCE;
-}
-
-// The least-squares optimum inside the bounds (an active-set method over Ceres' bounded
-// Levenberg-Marquardt).  Ceres' projected steps creep along an active bound and stop short of
-// the optimum on it, so a run that ends on a bound is followed by one on that face (the
-// parameter held at its bound); the bound is kept when the cost rises into the range there
-// (the Karush-Kuhn-Tucker sign of the gradient), else the search starts again just inside.
-LeastSquares least_squares_in_range(const Residuals& functor, const std::vector<Bound>& bounds,
-                                    Eigen::VectorXd& x, int max_iterations) {
-  LeastSquares out;
-  for (int round = 0; round < 3; ++round) {
-    if (!run_levenberg_marquardt(functor, bounds, x, std::nullopt, max_iterations, out)) return out;
-    const auto i = on_bound(x, bounds);
-    if (!i) {
-      out.converged = true;
-      return out;
-    }
-    const auto& b = bounds[static_cast<std::size_t>(*i)];
-    const bool lower = x[*i] - b.lower <= b.upper - x[*i];
-    x[*i] = lower ? b.lower : b.upper;
-    if (!run_levenberg_marquardt(functor, bounds, x, i, max_iterations, out)) return out;
-    Eigen::VectorXd r(functor.values());
-    Eigen::MatrixXd jac;
-    functor(x, r);
-    functor.df(x, jac);
-    const double slope = jac.col(*i).dot(r);  // half the cost's derivative along parameter i
-    if (lower ? slope >= 0.0 : slope <= 0.0) {
-      out.converged = true;
-      out.on_bound = i;
-      return out;
-    }
-    x[*i] += (lower ? 1e-3 : -1e-3) * b.scale;
-  }
-  out.message = "the optimum moves on and off a bound of the law's range";
-  return out;
-}
-
 // More than two standard errors from zero.
 bool determined(double value, const std::optional<double>& se) {
   return se && 2.0 * *se < std::abs(value);
+}
+
+int ogden_term_count(const UniaxialFitOptions& options) {
+  return options.ogden_alpha_start.empty() ? options.ogden_terms
+                                           : static_cast<int>(options.ogden_alpha_start.size());
+}
+
+// The correlations of the reported parameters (a reciprocal one turns the sign of its row and
+// column) and the information criteria (none for an exact fit).
+void add_statistics(UniaxialFit& fit, const Eigen::MatrixXd& jac,
+                    const std::optional<Eigen::MatrixXd>& cov, const std::vector<bool>& reciprocal,
+                    double ssr) {
+  const auto p = jac.cols();
+  if (cov && (cov->diagonal().array() > 0.0).all() && cov->allFinite()) {
+    fit.correlation.assign(static_cast<std::size_t>(p),
+                           std::vector<double>(static_cast<std::size_t>(p)));
+    for (Eigen::Index i = 0; i < p; ++i)
+      for (Eigen::Index j = 0; j < p; ++j) {
+        const double sign = (reciprocal[static_cast<std::size_t>(i)] ? -1.0 : 1.0) *
+                            (reciprocal[static_cast<std::size_t>(j)] ? -1.0 : 1.0);
+        fit.correlation[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+            i == j ? 1.0 : sign * (*cov)(i, j) / std::sqrt((*cov)(i, i) * (*cov)(j, j));
+      }
+  }
+  if (std::isfinite(ssr) && ssr > 0.0)
+    fit.information = information_criteria(fit.points, static_cast<int>(p), ssr);
+}
+
+// Why the best fit on a bound of LawFitModel's range says the law does not describe the data
+// inside it.
+std::string law_model_bound_message(FitLaw law, const detail::LawFitModel& model, int index,
+                                    const Eigen::VectorXd& x) {
+  const auto& b = model.bounds()[static_cast<std::size_t>(index)];
+  const bool lower = x[index] - b.lower <= b.upper - x[index];
+  const auto& name = model.names()[static_cast<std::size_t>(index)];
+  const auto where =
+      fmt::format("the best {} fit lies on a bound of the law's validity range: ", to_string(law));
+  if (model.reciprocal()[static_cast<std::size_t>(index)])
+    return where + (lower ? fmt::format("1/{} = 0, the neo-Hookean limit: the data show no "
+                                        "stiffening this law can describe (fit neo-hookean)",
+                                        name)
+                          : fmt::format("1/{} = {:.4g}, where the data's largest stretch locks "
+                                        "the law: they stiffen faster than it can",
+                                        name,
+                                        x[index]));
+  return where + fmt::format("{} = {:.4g}{}{}, the {} end of its range",
+                             name,
+                             x[index],
+                             model.units()[static_cast<std::size_t>(index)].empty() ? "" : " ",
+                             model.units()[static_cast<std::size_t>(index)],
+                             lower ? "lower" : "upper");
 }
 
 // Why the best fit on a bound says the law does not describe the data inside its range.
@@ -318,8 +260,61 @@ std::string to_string(FitLaw law) {
       return "neo-hookean";
     case FitLaw::MooneyRivlin:
       return "mooney-rivlin";
+    case FitLaw::Yeoh:
+      return "yeoh";
+    case FitLaw::Ogden:
+      return "ogden";
+    case FitLaw::ArrudaBoyce:
+      return "arruda-boyce";
+    case FitLaw::GentGent:
+      return "gent-gent";
   }
   return "gent";
+}
+
+std::string to_string(StressTest test) {
+  return test == StressTest::Uniaxial ? "uniaxial" : "equibiaxial";
+}
+
+std::vector<FitLaw> all_fit_laws() {
+  return {FitLaw::Gent,
+          FitLaw::NeoHookean,
+          FitLaw::MooneyRivlin,
+          FitLaw::Yeoh,
+          FitLaw::Ogden,
+          FitLaw::ArrudaBoyce,
+          FitLaw::GentGent};
+}
+
+FitLaw fit_law_of(const std::string& name) {
+  std::string names;
+  for (const auto law : all_fit_laws()) {
+    if (to_string(law) == name) return law;
+    names += (names.empty() ? "" : ", ") + to_string(law);
+  }
+  throw InvalidInput("law", fmt::format("unknown law '{}'; the laws are {}", name, names));
+}
+
+InformationCriteria information_criteria(int points, int law_parameters, double rss_mpa2) {
+  if (points < 1 || law_parameters < 0)
+    throw std::invalid_argument(fmt::format(
+        "information criteria need n >= 1 points and p >= 0 parameters, got n = {}, p = {}",
+        points,
+        law_parameters));
+  if (!std::isfinite(rss_mpa2) || !(rss_mpa2 > 0.0))
+    throw std::invalid_argument(fmt::format(
+        "information criteria need a sum of squared residuals > 0 (ln 0 for an exact fit), got {}",
+        rss_mpa2));
+  InformationCriteria c;
+  c.points = points;
+  c.parameters = law_parameters + 1;  // and the variance
+  c.rss_mpa2 = rss_mpa2;
+  const double n = points, k = c.parameters;
+  const double fit_term = n * std::log(rss_mpa2 / n);
+  c.aic = fit_term + 2.0 * k;
+  if (n - k - 1.0 > 0.0) c.aicc = c.aic + 2.0 * k * (k + 1.0) / (n - k - 1.0);
+  c.bic = fit_term + k * std::log(n);
+  return c;
 }
 
 std::vector<UniaxialPoint> uniaxial_points(const std::vector<double>& force_n,
@@ -388,33 +383,13 @@ std::vector<UniaxialPoint> uniaxial_points_from_table(
   return points;
 }
 
-UniaxialFit fit_uniaxial(const std::vector<UniaxialPoint>& points, FitLaw law,
-                         const UniaxialFitOptions& options) {
-  const int p = parameter_count(law);
-  if (static_cast<int>(points.size()) <= p)
-    throw std::invalid_argument(fmt::format(
-        "a {} fit has {} parameter{} and needs at least {} points (one more, for the residual's "
-        "variance), got {}",
-        to_string(law),
-        p,
-        p == 1 ? "" : "s",
-        p + 1,
-        points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (!std::isfinite(points[i].stretch) || points[i].stretch <= 0.0)
-      throw std::invalid_argument(fmt::format(
-          "point {}: the stretch must be a finite number > 0, got {}", i + 1, points[i].stretch));
-    if (!std::isfinite(points[i].nominal_stress_mpa))
-      throw std::invalid_argument(
-          fmt::format("point {}: the stress must be a finite number", i + 1));
-  }
-  const Data d = prepare(points);
-  if (!(d.g.squaredNorm() > 0.0))
-    throw std::invalid_argument("every point is at stretch 1: the data carry no information");
-  if (!(d.g.dot(d.stress) > 0.0))
-    throw std::invalid_argument(
-        "the stresses do not grow with the stretch: no positive shear modulus fits them");
+namespace {
 
+// The laws with closed-form stresses and Jacobians in a uniaxial test (Residuals above).
+UniaxialFit fit_closed_form(const std::vector<UniaxialPoint>& points, FitLaw law,
+                            const UniaxialFitOptions& options) {
+  const int p = parameter_count(law);
+  const Data d = prepare(points);
   Residuals functor{d, law};
   Eigen::VectorXd x = start(d, law);
   const auto bounds = validity_bounds(d, law, x[0]);
@@ -425,6 +400,7 @@ UniaxialFit fit_uniaxial(const std::vector<UniaxialPoint>& points, FitLaw law,
 
   UniaxialFit fit;
   fit.law = law;
+  fit.test = StressTest::Uniaxial;
   fit.points = static_cast<int>(points.size());
   fit.iterations = solved.iterations;
   if (!solved.converged || !x.allFinite()) {
@@ -541,9 +517,185 @@ UniaxialFit fit_uniaxial(const std::vector<UniaxialPoint>& points, FitLaw law,
       fit.parameters.push_back(j);
       break;
     }
+    default:
+      break;
   }
   if (material_valid) fit.material = material;
+  add_statistics(fit, jac, cov, {false, law == FitLaw::Gent}, ssr);
   return fit;
+}
+
+// Any law through LawFitModel: the library's stresses and a difference Jacobian.
+UniaxialFit fit_law_model(const std::vector<UniaxialPoint>& points, FitLaw law,
+                          const UniaxialFitOptions& options) {
+  const detail::LawFitModel model(law, points, options);
+  const detail::LawResiduals functor(model, points);
+  // From each start; the lowest cost of the runs that converge (the first start's run when
+  // none does).
+  Eigen::VectorXd x;
+  detail::LeastSquares solved;
+  double best_cost = std::numeric_limits<double>::infinity();
+  int iterations = 0;
+  for (const auto& start : model.starts()) {
+    Eigen::VectorXd xs = start;
+    auto run =
+        detail::least_squares_with_active_set(functor, model.bounds(), xs, options.max_iterations);
+    iterations += run.iterations;
+    Eigen::VectorXd rs(functor.values());
+    const double cost = run.converged && xs.allFinite() && functor(xs, rs)
+                            ? rs.squaredNorm()
+                            : std::numeric_limits<double>::infinity();
+    if (x.size() == 0 || cost < best_cost) {
+      x = xs;
+      solved = run;
+      best_cost = cost;
+    }
+  }
+  solved.iterations = iterations;
+
+  UniaxialFit fit;
+  fit.law = law;
+  fit.test = options.test;
+  fit.points = static_cast<int>(points.size());
+  fit.iterations = solved.iterations;
+  Eigen::VectorXd r(functor.values());
+  if (!solved.converged || !x.allFinite() || !functor(x, r)) {
+    fit.status = Status::NoConvergence;
+    fit.message = "Levenberg-Marquardt did not converge: " + solved.message;
+    return fit;
+  }
+  fit.status = solved.on_bound ? Status::OnBound : Status::Converged;
+  if (solved.on_bound) fit.message = law_model_bound_message(law, model, *solved.on_bound, x);
+  Eigen::MatrixXd jac;
+  functor.df(x, jac);
+  const double ssr = r.squaredNorm();
+  const double n = static_cast<double>(points.size());
+  const int p = model.size();
+  fit.rms_residual_mpa = std::sqrt(ssr / n);
+  fit.residual_sd_mpa = std::sqrt(ssr / (n - p));
+  for (const auto& point : points)
+    fit.max_i1_minus_3 =
+        std::max(fit.max_i1_minus_3,
+                 options.test == StressTest::Uniaxial
+                     ? point.stretch * point.stretch + 2.0 / point.stretch - 3.0
+                     : 2.0 * point.stretch * point.stretch + std::pow(point.stretch, -4.0) - 3.0);
+  fit.fitted_stress_mpa.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    fit.fitted_stress_mpa[i] = r[static_cast<Eigen::Index>(i)] + points[i].nominal_stress_mpa;
+
+  // The covariance of the parameters free at the optimum (those held on a bound have none: a
+  // held Ogden mu_p = 0 also leaves its alpha_p without effect, a zero column).
+  std::vector<Eigen::Index> free;
+  for (int i = 0; i < p; ++i)
+    if (std::find(solved.held.begin(), solved.held.end(), i) == solved.held.end())
+      free.push_back(i);
+  std::optional<Eigen::MatrixXd> cov;
+  if (!free.empty()) {
+    Eigen::MatrixXd jac_free(jac.rows(), static_cast<Eigen::Index>(free.size()));
+    for (std::size_t k = 0; k < free.size(); ++k)
+      jac_free.col(static_cast<Eigen::Index>(k)) = jac.col(free[k]);
+    if (const auto c = covariance(jac_free, fit.residual_sd_mpa * fit.residual_sd_mpa)) {
+      cov = Eigen::MatrixXd::Constant(p, p, std::numeric_limits<double>::quiet_NaN());
+      for (std::size_t a = 0; a < free.size(); ++a)
+        for (std::size_t b = 0; b < free.size(); ++b)
+          (*cov)(free[a], free[b]) =
+              (*c)(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+    }
+  }
+  for (int i = 0; i < p; ++i) {
+    const auto name = model.names()[static_cast<std::size_t>(i)];
+    const bool held = std::find(solved.held.begin(), solved.held.end(), i) != solved.held.end();
+    FittedParameter fp{
+        name, model.units()[static_cast<std::size_t>(i)], x[i], std::nullopt, false, ""};
+    std::optional<double> se;
+    if (cov && (*cov)(i, i) >= 0.0 && std::isfinite((*cov)(i, i))) se = std::sqrt((*cov)(i, i));
+    const bool reciprocal = model.reciprocal()[static_cast<std::size_t>(i)];
+    fp.identifiable = determined(x[i], se);
+    if (reciprocal) {
+      // Fitted as c = 1/value: the value exists for c > 0, its error by the delta method.
+      if (x[i] > 0.0) {
+        fp.value = 1.0 / x[i];
+        if (se) fp.standard_error = *se / (x[i] * x[i]);
+      } else {
+        fp.value = std::nullopt;
+      }
+      if (!fp.identifiable)
+        fp.note = fmt::format(
+            "not identifiable: 1/{} = {:.3g}{} is within two standard errors of the neo-Hookean "
+            "limit 0",
+            name,
+            x[i],
+            se ? fmt::format(" +- {:.3g}", *se) : std::string());
+    } else {
+      fp.standard_error = se;
+      if (!fp.identifiable)
+        fp.note = se ? "not identifiable: the value is within two standard errors of zero"
+                     : "the Jacobian is singular: the data cannot separate the parameters";
+    }
+    if (held) fp.note = "held on its bound at the optimum (no standard error): see the message";
+    if (law == FitLaw::Gent && i == 1) {
+      fit.inverse_j_lim = x[1];
+      fit.inverse_j_lim_se = se;
+      if (se && x[1] + 2.0 * *se > 0.0) fit.j_lim_lower_bound = 1.0 / (x[1] + 2.0 * *se);
+    }
+    fit.parameters.push_back(fp);
+  }
+  fit.material = model.material(x);
+  add_statistics(fit, jac, cov, model.reciprocal(), ssr);
+  return fit;
+}
+
+}  // namespace
+
+UniaxialFit fit_uniaxial(const std::vector<UniaxialPoint>& points, FitLaw law,
+                         const UniaxialFitOptions& options) {
+  const int p = law == FitLaw::Ogden ? 2 * ogden_term_count(options) : parameter_count(law);
+  if (static_cast<int>(points.size()) <= p)
+    throw std::invalid_argument(fmt::format(
+        "a {} fit has {} parameter{} and needs at least {} points (one more, for the residual's "
+        "variance), got {}",
+        to_string(law),
+        p,
+        p == 1 ? "" : "s",
+        p + 1,
+        points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!std::isfinite(points[i].stretch) || points[i].stretch <= 0.0)
+      throw std::invalid_argument(fmt::format(
+          "point {}: the stretch must be a finite number > 0, got {}", i + 1, points[i].stretch));
+    if (!std::isfinite(points[i].nominal_stress_mpa))
+      throw std::invalid_argument(
+          fmt::format("point {}: the stress must be a finite number", i + 1));
+  }
+  if (options.max_iterations < 1)
+    throw std::invalid_argument(
+        fmt::format("max_iterations must be >= 1, got {}", options.max_iterations));
+  const Data d = prepare(points);
+  if (!(d.g.squaredNorm() > 0.0))
+    throw std::invalid_argument("every point is at stretch 1: the data carry no information");
+  if (!(d.g.dot(d.stress) > 0.0))
+    throw std::invalid_argument(
+        "the stresses do not grow with the stretch: no positive shear modulus fits them");
+  const bool closed_form =
+      options.test == StressTest::Uniaxial &&
+      (law == FitLaw::Gent || law == FitLaw::NeoHookean || law == FitLaw::MooneyRivlin);
+  return closed_form ? fit_closed_form(points, law, options) : fit_law_model(points, law, options);
+}
+
+std::vector<UniaxialFit> compare_uniaxial_fits(const std::vector<UniaxialPoint>& data,
+                                               const std::vector<FitLaw>& laws,
+                                               const UniaxialFitOptions& options) {
+  if (laws.empty()) throw std::invalid_argument("laws: give at least one law to compare");
+  std::vector<UniaxialFit> fits;
+  for (const auto law : laws) fits.push_back(fit_uniaxial(data, law, options));
+  // A converged or on-bound fit with an AIC first, by AIC; the rest keep their order.
+  std::stable_sort(fits.begin(), fits.end(), [](const UniaxialFit& a, const UniaxialFit& b) {
+    const bool ra = a.information && a.status != Status::NoConvergence;
+    const bool rb = b.information && b.status != Status::NoConvergence;
+    if (ra != rb) return ra;
+    return ra && a.information->aic < b.information->aic;
+  });
+  return fits;
 }
 
 }  // namespace puncture

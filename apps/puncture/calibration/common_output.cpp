@@ -108,6 +108,9 @@ std::string calibration_text(const CriticalI1Report& r, Format f) { return rende
 std::string calibration_text(const FrictionReport& r, Format f) { return render_any(r, f); }
 std::string calibration_text(const JLimReport& r, Format f) { return render_any(r, f); }
 std::string calibration_text(const UniaxialFitReport& r, Format f) { return render_any(r, f); }
+std::string calibration_text(const UniaxialComparisonReport& r, Format f) {
+  return render_any(r, f);
+}
 std::string calibration_text(const BandReport& r, Format f) { return render_any(r, f); }
 
 }  // namespace puncture::cli

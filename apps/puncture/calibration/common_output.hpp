@@ -58,7 +58,20 @@ std::string json_text(const JLimReport& r);
 // uniaxial_fit_output.cpp
 std::string summary(const UniaxialFitReport& r);
 std::string csv_text(const UniaxialFitReport& r);
+// Pieces of a fit that the comparison's writers share: "G = 0.06 +- 0.001 MPa"; the flags
+// that give the fitted material to the model (empty without one); the correlation and the
+// information-criteria lines; the fit's JSON object and the specimen's.
+std::string parameter_text(const FittedParameter& p);
+std::string model_flags(const UniaxialFit& fit);
+void statistics_lines(std::string& out, const UniaxialFit& fit);
+json fit_json(const UniaxialFit& fit);
+json specimen_json(const std::optional<SpecimenGeometry>& specimen);
 std::string json_text(const UniaxialFitReport& r);
+
+// uniaxial_comparison_output.cpp
+std::string summary(const UniaxialComparisonReport& r);
+std::string csv_text(const UniaxialComparisonReport& r);
+std::string json_text(const UniaxialComparisonReport& r);
 
 // band_output.cpp
 std::string summary(const BandReport& r);
