@@ -4,6 +4,8 @@
 //                indenter radius 0.08 A
 //   Fig. 12(b)   Part III stretch against friction for a = 0.04, 0.08, 0.12 A, F/2piGHA = 1
 //   Fig. 13(a-e) loading curves to puncture: a = 1-4 mm lubricated (mu' = 0.18), 1 mm dry (1.95)
+//   Fig. 14      the balloons: a = 1 mm on the membrane inflated by a gas pressure held
+//                constant (--pressure, else 3e-4 MPa: the paper gives none), lubricated vs dry
 // Figs. 12 and 13 are computed with the ring-balance Part II equation and with the paper's
 // printed Eq. 18.
 #include <fmt/format.h>
@@ -51,6 +53,14 @@ constexpr std::array<Fig13Panel, 5> kFig13{{
     {"d", 4.0, 0.18},
     {"e", 1.0, 1.95},
 }};
+
+// Fig. 14's balloons: "two inflated balloons with the same air pressure are punctured by the
+// cylindrical steel indenter with radius of 1 mm", lubricated and dry.  The paper gives neither
+// the pressure nor the balloon: the flags' membrane, inflated by --pressure or else by 3e-4 MPa
+// (the paper's membrane: pole stretch 1.118, dome 10.4 mm above the clamp).
+constexpr double kFig14IndenterRadiusMm = 1.0;
+constexpr double kFig14DefaultPressureMpa = 3e-4;
+constexpr std::array kFig14Friction{0.18, 1.95};
 
 // A number, or null when it is not finite (a failed or unbounded quantity).
 json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
@@ -220,6 +230,27 @@ json fig13(const Problem& base, int points) {
   return {{"panels", panels}};
 }
 
+json fig14(const Problem& base, int points) {
+  Problem p = base;
+  p.indenter = FlatPunch{kFig14IndenterRadiusMm};
+  p.stick = {};  // sliding: under pressure the flat punch has no stick stage
+  p.part_two_equation = PartTwoEquation::RingBalance;
+  const bool assumed = !(base.preload.pressure_mpa > 0.0);
+  if (assumed) p.preload.pressure_mpa = kFig14DefaultPressureMpa;
+  json curves = json::array();
+  for (const double mu : kFig14Friction) {
+    p.friction = mu;
+    json c = curve_json(p, points);
+    c["friction"] = mu;
+    curves.push_back(c);
+  }
+  return {{"indenter_radius_mm", kFig14IndenterRadiusMm},
+          {"pressure_mpa", p.preload.pressure_mpa},
+          {"pressure_assumed", assumed},
+          {"prestretch", p.preload.prestretch},
+          {"curves", curves}};
+}
+
 }  // namespace
 
 void add_figures_options(CLI::App& figures, FiguresFlags& f) {
@@ -239,6 +270,8 @@ std::string figures_json(const Problem& base, const CurveFlags& curve) {
   out["fig12b"] = fig12b(base);
   progress.note("Fig. 13");
   out["fig13"] = fig13(base, curve.points);
+  progress.note("Fig. 14");
+  out["fig14"] = fig14(base, curve.points);
   return out.dump(1) + "\n";
 }
 

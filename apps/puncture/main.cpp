@@ -46,7 +46,7 @@ constexpr const char* kFooter =
     "  puncture state --depth 8 --stick force:0.5 --stage auto\n"
     "  puncture puncture --indenter-radius 1 --material neo-hookean\n"
     "  puncture curve --plot curve.png            the curve drawn, stages shaded\n"
-    "  puncture figures --out figures            the paper's Figs. 11-13, PNG and SVG\n"
+    "  puncture figures --out figures            the paper's Figs. 11-14, PNG and SVG\n"
     "  puncture calibrate friction --indenter-radius 1 --puncture-force 1.72 --hole-ratio 1.58\n"
     "  puncture fit uniaxial tensile.csv --material gent\n"
     "  puncture verify --indenter-radius 1        the solver checked for this membrane\n"
@@ -128,10 +128,12 @@ int main(int argc, char** argv) {
     auto* figures = app.add_subcommand(
         "figures",
         "The paper's analytical figures (Figs. 11, 12(a), 12(b), 13(a)-(e)) as PNG and SVG\n"
-        "in --out DIR, with the ring-balance and the printed Eq. 18 Part II equations");
+        "in --out DIR, with the ring-balance and the printed Eq. 18 Part II equations, and\n"
+        "Fig. 14: a 1 mm flat punch on the inflated membrane, lubricated vs dry");
     figures->footer(
         "The membrane is the one the physical flags give (default: the paper's); each figure\n"
-        "sets its own indenter radius and friction.  Needs Python 3 with matplotlib.");
+        "sets its own indenter radius and friction.  Fig. 14's gas pressure is --pressure\n"
+        "(MPa), else 3e-4 MPa (the paper gives none).  Needs Python 3 with matplotlib.");
     add_figures_options(*figures, figures_flags);
     CalibrationFlags calibration_flags;
     add_calibration_commands(app, calibration_flags);

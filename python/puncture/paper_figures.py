@@ -9,6 +9,8 @@ DIR/figures-data.json and calls draw_all(data, DIR), which writes each figure as
     fig12b    Part III stretch against friction for indenter radii 0.04, 0.08, 0.12 A, same force
     fig13a-e  loading curves to puncture: 1-4 mm lubricated (mu' = 0.18), 1 mm dry (1.95);
     fig13     the five panels on one page
+    fig14     the balloons: a 1 mm flat punch on the inflated membrane (gas pressure held),
+              lubricated (mu' = 0.18) vs dry (1.95), loading curves and puncture points
 
 Figs. 12 and 13 show the ring-balance Part II equation (solid, the default) and the paper's
 printed Eq. 18 (dashed) where they differ.  The paper's experimental data are not reproduced.
@@ -26,7 +28,7 @@ try:
 except ImportError:  # run from plot_cli.py as a script
     import plots
 
-__all__ = ["draw_all", "fig11", "fig12a", "fig12b", "fig13_panel", "fig13"]
+__all__ = ["draw_all", "fig11", "fig12a", "fig12b", "fig13_panel", "fig13", "fig14"]
 
 EQUATION_NAMES = {
     "ring-balance": "ring balance (default)",
@@ -265,6 +267,45 @@ def fig13(data):
     return fig
 
 
+def fig14(data):
+    """The paper's Fig. 14 situation: both frictions' loading curves, from the inflated pole."""
+    d = data["fig14"]
+    with matplotlib.rc_context(plots.STYLE):
+        fig = Figure(figsize=(7.0, 5.0), layout="constrained")
+        ax = fig.add_subplot()
+        failed = []
+        for colour, c in zip(SERIES_COLOURS, d["curves"]):
+            kind = "dry" if c["friction"] > 1 else "lubricated"
+            if "failure" in c:
+                failed.append(f"{kind}: {c['failure']['message']}")
+                continue
+            p = c.get("puncture")
+            text = f"{kind}, μ' = {c['friction']:g}"
+            if p:
+                text += f": puncture {p['force_n']:.3g} N at {p['depth_mm']:.3g} mm"
+            ax.plot(_values(c["depth_mm"]), _values(c["force_n"]), color=colour, lw=1.6,
+                    label=text)
+            if p:
+                ax.plot([p["depth_mm"]], [p["force_n"]], "X", color=plots.CRITICAL_COLOUR,
+                        ms=9, mec="white", mew=0.7, zorder=5)
+        ax.plot([], [], ls="none", marker="X", color=plots.CRITICAL_COLOUR, ms=9, mec="white",
+                label="predicted puncture (I1 = critical I1)")
+        ax.set_xlim(left=0)
+        ax.set_ylim(bottom=0)
+        ax.set_xlabel("indentation depth δ from the inflated pole [mm]")
+        ax.set_ylabel("indenter force F [N]")
+        ax.legend(loc="upper left", framealpha=0.9)
+        ax.text(0.98, 0.03, "Coulomb sliding throughout; the face's material is taken to slide\n"
+                "outward, which it does from a few mm on (docs/model.md §17)",
+                transform=ax.transAxes, ha="right", va="bottom", fontsize=8, color="#444444")
+        assumed = " (assumed: the paper gives none)" if d["pressure_assumed"] else ""
+        ax.set_title(f"Fig. 14: flat punch a = {d['indenter_radius_mm']:g} mm on the membrane "
+                     f"inflated by p = {d['pressure_mpa']:g} MPa{assumed}, held\n"
+                     f"{_membrane(data)}"
+                     + ("\nno curve: " + "; ".join(failed) if failed else ""), fontsize=9)
+    return fig
+
+
 def draw_all(data, out_dir, formats=(".png", ".svg")):
     """Writes every figure into out_dir in each format; returns the paths written."""
     os.makedirs(out_dir, exist_ok=True)
@@ -272,6 +313,8 @@ def draw_all(data, out_dir, formats=(".png", ".svg")):
     figures += [(f"fig13{p['label']}", fig13_panel(data, p["label"]))
                 for p in data["fig13"]["panels"]]
     figures.append(("fig13", fig13(data)))
+    if "fig14" in data:
+        figures.append(("fig14", fig14(data)))
     written = []
     for name, fig in figures:
         for suffix in formats:

@@ -196,7 +196,7 @@ def test_cli_figures(tmp_path, cli):
     rc, out, err = cli.run("figures", "--out", out_dir, "--points", "40")
     assert rc == 0, err
     names = ["fig11", "fig12a", "fig12b", "fig13a", "fig13b", "fig13c", "fig13d", "fig13e",
-             "fig13"]
+             "fig13", "fig14"]
     for name in names:
         check_png(out_dir / f"{name}.png", min_width=900)
         label = {"fig11": "stretch λ", "fig12b": "friction coefficient"}.get(name, "[mm]")
@@ -213,6 +213,13 @@ def test_cli_figures(tmp_path, cli):
         pu.predict_puncture(pu.Problem()).force_n, rel=1e-9)
     assert eq18["puncture"]["force_n"] == pytest.approx(3.3409, abs=1e-4)
     assert panels["e"]["friction"] == 1.95 and panels["e"]["indenter_radius_mm"] == 1.0
+    # Fig. 14: the balloons, lubricated and dry, both punctured, the dry one later and harder
+    fig14 = data["fig14"]
+    assert fig14["indenter_radius_mm"] == 1.0 and fig14["pressure_assumed"]
+    lubricated, dry = fig14["curves"]
+    assert (lubricated["friction"], dry["friction"]) == (0.18, 1.95)
+    assert dry["puncture"]["force_n"] > lubricated["puncture"]["force_n"]
+    assert dry["puncture"]["depth_mm"] > lubricated["puncture"]["depth_mm"]
     series = data["fig12b"]["series"]
     assert sorted({s["radius_ratio"] for s in series}) == [0.04, 0.08, 0.12]
     rc, _, err = cli.run("figures", "--out", out_dir, "--format", "json")

@@ -66,6 +66,9 @@ struct ScaledSolution {
   double wrinkle_radius = -1.0;
   std::vector<PartOneSample> part_one;
   std::vector<PartTwoSample> part_two;
+  // A non-uniform Part III (the flat punch with friction under pressure): R, lambda1, lambda2
+  // from the pole to its edge; empty when it is uniform.
+  std::vector<std::array<double, 3>> part_three;
   bool ok() const { return status == Status::Converged; }
 };
 

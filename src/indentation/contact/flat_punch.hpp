@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "indentation/contact/contact_model.hpp"
+#include "indentation/contact/flat_punch_face.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
 #include "indentation/free_part.hpp"
 #include "indentation/membrane_fields.hpp"
@@ -73,12 +74,14 @@ class FlatPunchContact {
         s_(settings),
         locking_i1_(part_one.locking_i1()),
         pressure_(part_one.pressure()),
-        face_load_(0.5 * pressure_ * s_.a * s_.a) {}
+        face_load_(0.5 * pressure_ * s_.a * s_.a),
+        rough_face_(pressure_ > 0.0 && s_.mu > 0.0) {}
 
   // Every configuration's parameter exceeds this floor: 1 for the stretches at the edge and of
   // Part III, a / A for the hoop stretch a / R at the top of Part II (R < A).
   double parameter_floor(Configuration configuration) const {
     if (configuration == Configuration::Stick) return 0.0;
+    if (rough_face_) return 1.0;  // the pole stretch
     // Part III's stretch also exceeds a / (A / L0), which keeps its corner, at R = a / L,
     // inside the clamp (that bound exceeds 1 only for a pre-stretched membrane with a > A / L0).
     return configuration == Configuration::SlipWithPartTwo ? s_.a : std::max(1.0, s_.a);
@@ -102,6 +105,7 @@ class FlatPunchContact {
   std::optional<FreeStart> free_start(Configuration c, double f, double p) const {
     if (c == Configuration::Stick) return held_start(f, p);
     if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
+    if (rough_face_) return rough_start(c, f, p);
     switch (c) {
       case Configuration::SlipWithoutPartTwo: {
         // Part III stretch p: the corner material sits at R = a / p; the capstan law and the
@@ -148,6 +152,7 @@ class FlatPunchContact {
       sol.part_three_stretch = part_one_.prestretch();
       return true;
     }
+    if (rough_face_) return attach_rough(c, st, p, record, sol, maxima);
     if (c == Configuration::SlipWithoutPartTwo) {
       sol.r_corner = st.r0;
       sol.part_three_stretch = p;
@@ -165,7 +170,7 @@ class FlatPunchContact {
           membrane_stress(law_, y[0], l2).s1 - capstan * membrane_stress(law_, l2, l2).s1;
       return std::isfinite(gap) ? gap : -1.0;
     };
-    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_, pressure_};
     PartTwoState y{st.state[1], 0.0};
     double r_prev = st.r0, r_hit = -1.0;
     PartTwoState y_prev = y;
@@ -266,7 +271,10 @@ class FlatPunchContact {
   }
 
   // Depth control by the Part III stretch (contact_start) is offered with Part II.
-  bool contact_controls(Configuration c) const { return c == Configuration::SlipWithPartTwo; }
+  // (Not with friction under pressure: there Part III's stretch is not one number.)
+  bool contact_controls(Configuration c) const {
+    return c == Configuration::SlipWithPartTwo && !rough_face_;
+  }
 
   // SlipWithPartTwo given by its Part III stretch l3 and the hoop stretch p at its top (depth
   // control): Part II marched up the side from the corner, where the capstan condition gives
@@ -277,7 +285,7 @@ class FlatPunchContact {
   std::optional<FreeStart> contact_start(Configuration c, double l3, double p, bool record,
                                          ScaledSolution& sol) const {
     if (c != Configuration::SlipWithPartTwo) return std::nullopt;
-    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_, pressure_};
     InteriorMaximum<PartTwoState> side_max;
     Knots<PartTwoState> knots;
     const auto up = side_from_corner(
@@ -322,7 +330,7 @@ class FlatPunchContact {
         invert_radial_stress(law_, capstan * membrane_stress(law_, l3, l3).s1, l3);
     if (!l1_corner) return std::nullopt;
     const double r_corner = s_.a / l3, r_top = s_.a / p;
-    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_};
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_, pressure_};
     // y runs from 0 at the corner to minus Part II's length at the top (it grows downward).
     PartTwoState y{*l1_corner, 0.0};
     if (!integrate_part(
@@ -369,6 +377,7 @@ class FlatPunchContact {
 
   // Part III stretch at which Part I leaves the corner vertically (wrap angle pi/2) at force f.
   std::optional<double> part_two_onset_stretch(double f) const {
+    if (rough_face_) return rough_onset_stretch(f);
     // s_eq(L) / L = f exp(-mu pi/2) / a (f less the gas's share), increasing in L from 0 at 1.
     const double target = pull(f) * std::exp(-s_.mu * kHalfPi) / s_.a;
     if (pressure_ > 0.0 && !(target > 0.0)) return std::nullopt;
@@ -400,6 +409,9 @@ class FlatPunchContact {
     const auto onset = part_two_onset_stretch(f);
     if (!onset) return std::nullopt;
     if (std::isinf(*onset)) return 1.0;  // Part II at every stretch
+    // With friction under pressure: the corner carries more than the pull even at an
+    // unstretched pole (the capstan factor), so no pole stretch has Part II.
+    if (rough_face_ && *onset <= 1.0) return kTurnedBack;
     // The vertical exit's corner, at R = a / L, would lie beyond the clamp (pre-stretched, a >
     // A / L0): every admissible Part III stretch exits flatter, so there is no Part II.  The
     // limit of the residual as that corner reaches the clamp, a - L0 < 0, stands in for it.
@@ -437,6 +449,9 @@ class FlatPunchContact {
   // path).
   template <class Shooting>
   std::optional<ScaledSolution> direct_puncture(const Shooting& shooting, double i1c) const {
+    // With friction under pressure the corner's state depends on the whole face: the loading
+    // path is searched.
+    if (rough_face_) return std::nullopt;
     const double capstan = std::exp(s_.mu * kHalfPi);
     // Corner state: s1(lambda1, L) = capstan s_eq(L) and I1(lambda1, L) = i1c, increasing in L.
     auto corner_l1 = [&](double l) -> std::optional<double> {
@@ -514,12 +529,15 @@ class FlatPunchContact {
   // The largest I1 is Part III's when it exceeds Parts I and II (a tie, without friction, is
   // reported at the corner's Part I/II side); Part II spans the side from the corner to its top.
   LargestFirstInvariant largest_first_invariant(const ScaledSolution& sol) const {
-    const bool in_part_three = sol.max_i1 < max_first_invariant_of(sol);
+    // A non-uniform Part III (friction under pressure) keeps its largest I1 in sol.max_i1.
+    const bool in_part_three =
+        sol.max_i1 < max_first_invariant_of(sol) || (rough_face_ && sol.max_i1_r < sol.r_corner);
     const MembranePart part =
         in_part_three ? MembranePart::Tip
         : sol.configuration == Configuration::SlipWithPartTwo && sol.max_i1_r < sol.r_top
             ? MembranePart::Side
             : MembranePart::Free;
+    if (rough_face_) return {part, sol.max_i1_r, sol.max_i1_radius};
     return {part,
             in_part_three ? sol.r_corner : sol.max_i1_r,
             in_part_three ? sol.r_corner * sol.part_three_stretch : sol.max_i1_radius};
@@ -535,8 +553,24 @@ class FlatPunchContact {
     const double big_a = u.clamp_radius_mm, g = u.shear_modulus_mpa;
     const double depth = sol.depth * big_a;
     const double l3 = sol.part_three_stretch;
+    // The gas's contact pressure on the face (and added to Eq. 16 on the side), in MPa.
+    const double gas_mpa = pressure_ * g * u.thickness_mm / big_a;
+    // Non-uniform (friction under pressure): its samples from the pole to the edge.
+    for (const auto& [r_ref, l1, l2] : sol.part_three)
+      append_point(m,
+                   MembranePart::Tip,
+                   r_ref * big_a,
+                   l2 * r_ref * big_a,
+                   depth,
+                   0.0,
+                   l1,
+                   l2,
+                   membrane_stress(law_, l1, l2),
+                   g,
+                   gas_mpa,
+                   s_.mu * gas_mpa);
     constexpr int kPartThreePoints = 5;
-    for (int i = 0; i < kPartThreePoints; ++i) {
+    for (int i = 0; i < (sol.part_three.empty() ? kPartThreePoints : 0); ++i) {
       const double r_ref = sol.r_corner * i / (kPartThreePoints - 1);
       append_point(m,
                    MembranePart::Tip,
@@ -548,14 +582,15 @@ class FlatPunchContact {
                    l3,
                    membrane_stress(law_, l3, l3),
                    g,
-                   0.0,
-                   0.0);
+                   gas_mpa,
+                   s_.mu * gas_mpa);
     }
     const double radius_mm = s_.a * big_a;
     for (auto it = sol.part_two.rbegin(); it != sol.part_two.rend(); ++it) {
       const double r_ref = (*it)[0], l1 = (*it)[1], l2 = s_.a / r_ref;
       const auto st = membrane_stress(law_, l1, l2);
-      const double pressure = st.s2 * g * u.thickness_mm / (l1 * radius_mm);  // Eq. (16)
+      const double pressure =
+          st.s2 * g * u.thickness_mm / (l1 * radius_mm) + gas_mpa;  // Eq. (16) + gas
       const double z = depth - (sol.part_two_length - (*it)[2]) * big_a;
       append_point(m,
                    MembranePart::Side,
@@ -573,6 +608,8 @@ class FlatPunchContact {
   }
 
   std::string crack_location(const ScaledSolution& sol) const {
+    if (rough_face_ && sol.max_i1_r < sol.r_corner * (1.0 - 1e-12))
+      return "Part III, on the indenter's face (not uniform: friction under pressure)";
     const double l3 = sol.part_three_stretch;
     const double i1_tip = 2.0 * l3 * l3 + 1.0 / (l3 * l3 * l3 * l3);
     if (i1_tip > sol.max_i1 * (1.0 + 1e-9)) return "Part III, under the indenter's tip";
@@ -609,6 +646,235 @@ class FlatPunchContact {
     const double r0 = std::sqrt(2.0 * f / pressure_) / p;
     if (!(r0 < 1.0) || !(r0 > 0.0)) return std::nullopt;
     return FreeStart{{r0 * s_eq, p, p, 0.0}, r0, 0.0, 1.0};
+  }
+
+  // ---- Friction under a gas pressure (rough_face_): Part III not uniform (flat_punch_face.hpp),
+  // both sliding configurations shot on its pole stretch p.  From the pole outward everything
+  // is an initial-value problem: Part III to its edge (the contact disc's c = sqrt(2 f / P) on
+  // the face, else the corner at r = a), the capstan law across the corner, and with Part II
+  // the side marched up from the corner to where R s1 = f - P a^2 / 2 (Part I leaves there
+  // vertically).
+
+  // Part III's edge: reference radius, stretches, s1, and its largest I1 (reference and current
+  // radius), from the pole stretch to the current radius `edge`.
+  struct FaceEdge {
+    double r_ref = 0.0, l1 = 0.0, l2 = 0.0, s1 = 0.0;
+    double max_i1 = 0.0, max_i1_r = 0.0, max_i1_radius = 0.0;
+  };
+  // With `samples`: (R, lambda1, lambda2) from the pole (included) to the edge.  Empty when the
+  // material locks on the way or the edge's material lies beyond the clamp.
+  std::optional<FaceEdge> face_to(double pole, double edge,
+                                  std::vector<std::array<double, 3>>* samples = nullptr) const {
+    const PartThreeSystem<Law> face{law_, s_.mu * pressure_, locking_i1_};
+    const IntegrationSettings& fine = part_one_.settings().integration;
+    const double r_start = 1e-3 * edge;  // the series' error, O((mu P r)^2), is ~1e-12 there
+    auto x = face.pole_start(pole, r_start);
+    if (!x || !(edge > 0.0)) return std::nullopt;
+    FaceEdge out;
+    out.max_i1 = first_invariant(pole, pole);
+    Knots<PartThreeState> knots;
+    const bool ok = integrate_part(face, *x, r_start, edge, fine, [&](double r, const auto& y) {
+      // Along the face lambda1 > lambda2 > 1 grow outward: I1 is largest at the steps' ends
+      // (the edge in practice), so the step values suffice.
+      if (const double i1 = first_invariant(y[1], r / y[0]); i1 > out.max_i1) {
+        out.max_i1 = i1;
+        out.max_i1_r = y[0];
+        out.max_i1_radius = r;
+      }
+      if (samples) knots.add(r, y);
+      return y[0] < 1.0;  // the edge's material must lie inside the clamp
+    });
+    if (!ok || !((*x)[0] < 1.0) || !all_finite(*x)) return std::nullopt;
+    out.r_ref = (*x)[0];
+    out.l1 = (*x)[1];
+    out.l2 = edge / out.r_ref;
+    out.s1 = membrane_stress(law_, out.l1, out.l2).s1;
+    if (!(out.s1 > 0.0) || !std::isfinite(out.s1)) return std::nullopt;
+    if (samples) {
+      samples->assign(1, {0.0, pole, pole});
+      for (const auto& [r, y] : even_samples(face, knots, field_intervals(), fine))
+        samples->push_back({y[0], y[1], r / y[0]});
+    }
+    return out;
+  }
+
+  // Part II marched up from the corner (Part III's edge `e`, the capstan ratio exp(mu pi/2)) to
+  // where R s1 = f - P a^2 / 2, with observe(R, state) at each step: Part I's start there and
+  // Part II's length.  Empty when the corner alone already carries more (no Part II; 1e-9
+  // relative is the onset itself, Part II of zero length).
+  struct RoughSide {
+    FreeStart start;
+    double length;
+  };
+  template <class Observer>
+  std::optional<RoughSide> rough_side(const FaceEdge& e, double f, Observer&& observe) const {
+    const double capstan = std::exp(s_.mu * kHalfPi), q = pull(f);
+    const auto l1_corner = invert_radial_stress(law_, capstan * e.s1, e.l2, e.l1);
+    if (!l1_corner || !(q > 0.0)) return std::nullopt;
+    const double q_corner = e.r_ref * capstan * e.s1;
+    if (q_corner > q * (1.0 + 1e-9)) return std::nullopt;
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, s_.equation, locking_i1_, pressure_};
+    const IntegrationSettings& fine = part_one_.settings().integration;
+    // R s1 - q grows up the side (ring balance: d(R s1)/dR = mu (s2 + P a lambda1) > 0).
+    auto excess = [&](double r, const PartTwoState& y) {
+      const double v = r * membrane_stress(law_, y[0], s_.a / r).s1 - q;
+      return std::isfinite(v) ? v : 1.0;
+    };
+    PartTwoState y{*l1_corner, 0.0}, y_prev = y;
+    double r_top = e.r_ref;
+    observe(r_top, y);
+    double r_prev = e.r_ref, r_hit = -1.0;
+    if (q_corner < q &&
+        !integrate_part(side, y, e.r_ref, 1.0, fine, [&](double r, const PartTwoState& state) {
+          if (excess(r, state) >= 0.0) {
+            r_hit = r;
+            return false;
+          }
+          r_prev = r;
+          y_prev = state;
+          return true;
+        }))
+      return std::nullopt;
+    // The side reaches the clamp first: the top would lie beyond it.  Part I of zero length at the
+    // clamp stands in, with the residual a - L0 < 0 that the top's approach to the clamp tends to
+    // (the negative end of the shooting's bracket, as without friction).
+    if (q_corner < q && r_hit < 0.0)
+      return RoughSide{{{0.0, y[0], s_.a, 0.0}, 1.0, kHalfPi, capstan}, -y[1]};
+    // Met beyond the corner: located inside the last step.  (Met at the corner itself, q_corner
+    // within rounding of q, Part II has zero length.)
+    if (r_hit > r_prev) {
+      auto gap_at = [&](double r) {
+        const auto y_r = step_or_advance(side, y_prev, r_prev, r, fine);
+        return y_r ? excess(r, *y_r) : 1.0;
+      };
+      const double g_prev = gap_at(r_prev), g_hit = gap_at(r_hit);
+      if (!(g_prev * g_hit <= 0.0)) return std::nullopt;
+      std::uintmax_t iterations = 100;
+      const auto bracket =
+          boost::math::tools::toms748_solve(gap_at,
+                                            r_prev,
+                                            r_hit,
+                                            g_prev,
+                                            g_hit,
+                                            boost::math::tools::eps_tolerance<double>(50),
+                                            iterations);
+      r_top = 0.5 * (bracket.first + bracket.second);
+      const auto y_top = step_or_advance(side, y_prev, r_prev, r_top, fine);
+      if (!y_top) return std::nullopt;
+      y = *y_top;
+      observe(r_top, y);
+    }
+    // lambda1 at the top from R s1 = q exactly (as the start without friction has it).
+    const double l2 = s_.a / r_top;
+    const auto l1 = invert_radial_stress(law_, q / r_top, l2, y[0]);
+    if (!l1) return std::nullopt;
+    return RoughSide{{{0.0, *l1, l2, 0.0}, r_top, kHalfPi, capstan}, -y[1]};
+  }
+
+  std::optional<FreeStart> rough_start(Configuration c, double f, double pole) const {
+    if (c == Configuration::SlipWithoutPartTwo && f < face_load_) {
+      // On the face: Part I leaves the contact disc's edge tangentially, t = R s1.
+      const auto e = face_to(pole, std::sqrt(2.0 * f / pressure_));
+      if (!e) return std::nullopt;
+      return FreeStart{{e->r_ref * e->s1, e->l1, e->l2, 0.0}, e->r_ref, 0.0, 1.0};
+    }
+    const auto e = face_to(pole, s_.a);
+    if (!e) return std::nullopt;
+    if (c == Configuration::SlipWithPartTwo) {
+      const auto side = rough_side(*e, f, [](double, const PartTwoState&) {});
+      if (!side) return std::nullopt;
+      return side->start;
+    }
+    // Past the face without Part II: the corner slope from the capstan law, as without friction
+    // but with Part III's edge stress.
+    const double kappa = pull(f) / (e->r_ref * e->s1);
+    if (!(kappa >= 0.0) || kappa > std::exp(s_.mu * kHalfPi) * (1.0 + 1e-9)) return std::nullopt;
+    const double phi = corner_slope(kappa, s_.mu);
+    const double ratio = std::exp(s_.mu * phi);
+    const auto l1 = invert_radial_stress(law_, e->s1 * ratio, e->l2, e->l1);
+    if (!l1) return std::nullopt;
+    return FreeStart{
+        {e->r_ref * e->s1 * ratio * std::cos(phi), *l1, e->l2, 0.0}, e->r_ref, phi, ratio};
+  }
+
+  // Parts III and II after Part I: the face again (sampled with `record`), its largest I1, and
+  // Part II up to where Part I started.
+  bool attach_rough(Configuration c, const FreeStart& /*start*/, double pole, bool record,
+                    ScaledSolution& sol, bool maxima) const {
+    const bool on_face = c == Configuration::SlipWithoutPartTwo && sol.f < face_load_;
+    const auto e = face_to(pole,
+                           on_face ? std::sqrt(2.0 * sol.f / pressure_) : s_.a,
+                           record ? &sol.part_three : nullptr);
+    if (!e) {
+      sol.message = "Part III cannot be integrated to its edge";
+      return false;
+    }
+    sol.r_corner = e->r_ref;
+    sol.part_three_stretch = e->l2;  // its hoop stretch at the edge (at the pole: the fields)
+    auto track = [&](double i1, double r_ref, double radius) {
+      if (i1 > sol.max_i1) {
+        sol.max_i1 = i1;
+        sol.max_i1_r = r_ref;
+        sol.max_i1_radius = radius;
+      }
+    };
+    track(e->max_i1, e->max_i1_r, e->max_i1_radius);
+    if (c == Configuration::SlipWithoutPartTwo) return true;
+    InteriorMaximum<PartTwoState> side_max;
+    Knots<PartTwoState> knots;
+    const auto side = rough_side(*e, sol.f, [&](double r, const PartTwoState& y) {
+      if (record) knots.add(r, y);
+      if (maxima) side_max.observe(r, y, first_invariant(y[0], s_.a / r));
+    });
+    if (!side) {
+      sol.message = "Part II cannot be marched up to where Part I starts";
+      return false;
+    }
+    const PartTwoSystem<Law> side_system{law_, s_.a, s_.mu, s_.equation, locking_i1_, pressure_};
+    if (maxima && side_max.observed()) {
+      const auto peak =
+          refined_maximum(side_max, side_system, [&](double r, const PartTwoState& y) {
+            return first_invariant(y[0], s_.a / r);
+          });
+      track(peak.value, peak.r, s_.a);
+    }
+    if (record) {
+      // Stored from the top down, y measured down from the top, as without friction.
+      sol.part_two.clear();
+      const auto up =
+          even_samples(side_system, knots, field_intervals(), part_one_.settings().integration);
+      for (auto it = up.rbegin(); it != up.rend(); ++it)
+        sol.part_two.push_back({it->first, it->second[0], side->length + it->second[1]});
+    }
+    sol.part_two_length = side->length;
+    sol.edge_s1 = std::exp(s_.mu * kHalfPi) * e->s1;
+    sol.tension_ratio = std::exp(s_.mu * kHalfPi);
+    sol.depth += side->length;
+    return true;
+  }
+
+  // The pole stretch at which Part I leaves the corner vertically at force f: the corner's
+  // R s1 after the capstan, exp(mu pi/2) R_b s1(edge), equals f - P a^2 / 2 (increasing in the
+  // pole stretch).  Infinite where no stretch reaches it without locking.
+  std::optional<double> rough_onset_stretch(double f) const {
+    const double q = pull(f);
+    if (!(q > 0.0)) return std::nullopt;
+    const double capstan = std::exp(s_.mu * kHalfPi);
+    auto g = [&](double pole) -> std::optional<double> {
+      const auto e = face_to(pole, s_.a);
+      if (!e) return std::nullopt;
+      return capstan * e->r_ref * e->s1 - q;
+    };
+    const auto g_one = g(1.0);
+    if (!g_one) return std::nullopt;
+    if (*g_one >= 0.0) return 1.0;
+    const double cap = locking_radial_stretch(law_, 1.0);
+    if (!std::isfinite(cap))
+      if (const auto far = g(1e3); far && *far < 0.0)
+        return std::numeric_limits<double>::infinity();
+    const auto root = shoot_increasing(g, 1.0, *g_one, cap, 200);
+    if (!root || !g(*root)) return std::nullopt;
+    return root;
   }
 
   // On the face (and, under pressure, past the corner without Part II): the Part III stretch
@@ -763,6 +1029,9 @@ class FlatPunchContact {
   double locking_i1_;
   double pressure_;   // gas pressure P under the membrane (0: none)
   double face_load_;  // its resultant on the face, P a^2 / 2
+  // Friction under a gas pressure: Part III is not uniform (flat_punch_face.hpp), and both
+  // sliding configurations are shot on its pole stretch.
+  bool rough_face_;
 };
 
 }  // namespace puncture::detail
