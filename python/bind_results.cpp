@@ -245,6 +245,11 @@ void bind_results(py::module_& m) {
       .def_readonly("part_two_onset_at_switch",
                     &LoadingCurve::part_two_onset_at_switch,
                     "Part II appears as the held membrane starts sliding")
+      .def_readonly("face_slides_outward_from_mm",
+                    &LoadingCurve::face_slides_outward_from_mm,
+                    "flat punch under a gas pressure with friction: the first depth [mm] from "
+                    "which the face's material slides outward, as modelled (the points before "
+                    "it are not the membrane's states); None otherwise")
       .def_property_readonly(
           "puncture",
           [](py::object self) { return member_with_problem(self, &LoadingCurve::puncture); },

@@ -201,6 +201,9 @@ json curve_json(const Problem& p, int points) {
   out["depth_mm"] = depth;
   out["force_n"] = force;
   out["configuration"] = configuration;
+  // Under a gas pressure with friction: the points before it are not the membrane's states.
+  if (c.face_slides_outward_from_mm)
+    out["face_slides_outward_from_mm"] = number(*c.face_slides_outward_from_mm);
   if (c.puncture.ok())
     out["puncture"] = {{"depth_mm", number(c.puncture.depth_mm)},
                        {"force_n", number(c.puncture.force_n)},

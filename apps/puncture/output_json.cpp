@@ -93,6 +93,14 @@ json curve_json(const CurveReport& r) {
               {"part_two_onset", part_two},
               {"points", rows_json(curve_table(c.points))}};
   if (r.max_depth_mm > 0.0) out["max_depth_mm"] = finite(r.max_depth_mm, "max depth");
+  // A flat punch under a gas pressure with friction: the points before it are not the membrane's
+  // states (its face slides inward there).
+  if (std::holds_alternative<FlatPunch>(r.problem.indenter) && r.problem.preload.pressure_mpa > 0.0 &&
+      r.problem.friction > 0.0)
+    out["face_slides_outward_from_mm"] =
+        c.face_slides_outward_from_mm
+            ? json(finite(*c.face_slides_outward_from_mm, "face's outward sliding depth"))
+            : json(nullptr);
   return out;
 }
 

@@ -69,6 +69,10 @@ struct LoadingCurve : Outcome {
   std::optional<double> part_two_onset_depth_mm;  // where Part II appears in the slip stage
   std::optional<double> part_two_onset_force_n;
   bool part_two_onset_at_switch = false;  // Part II appears as the held membrane starts sliding
+  // A flat punch under a gas pressure with friction: the first curve depth from which the face's
+  // material slides outward, as the model's friction there assumes (docs/model.md §17); the
+  // points before it slide inward and are not the membrane's states.  Nothing otherwise.
+  std::optional<double> face_slides_outward_from_mm;
   PuncturePrediction puncture;
 };
 

@@ -283,8 +283,16 @@ def fig14(data):
             text = f"{kind}, μ' = {c['friction']:g}"
             if p:
                 text += f": puncture {p['force_n']:.3g} N at {p['depth_mm']:.3g} mm"
-            ax.plot(_values(c["depth_mm"]), _values(c["force_n"]), color=colour, lw=1.6,
-                    label=text)
+            depth, force = _values(c["depth_mm"]), _values(c["force_n"])
+            # Before the face slides outward the model's friction points the wrong way: those
+            # states are not the membrane's, drawn dotted.
+            start = c.get("face_slides_outward_from_mm")
+            valid = [d >= start for d in depth] if start is not None else [False] * len(depth)
+            first = valid.index(True) if True in valid else len(depth)
+            if first > 0:
+                ax.plot(depth[:first + 1], force[:first + 1], color=colour, lw=1.0, ls=":",
+                        alpha=0.8)
+            ax.plot(depth[first:], force[first:], color=colour, lw=1.6, label=text)
             if p:
                 ax.plot([p["depth_mm"]], [p["force_n"]], "X", color=plots.CRITICAL_COLOUR,
                         ms=9, mec="white", mew=0.7, zorder=5)
@@ -296,7 +304,8 @@ def fig14(data):
         ax.set_ylabel("indenter force F [N]")
         ax.legend(loc="upper left", framealpha=0.9)
         ax.text(0.98, 0.03, "Coulomb sliding throughout; the face's material is taken to slide\n"
-                "outward, which it does from a few mm on (docs/model.md §17)",
+                "outward, which it does from the end of the dotted part on: dotted, it slides\n"
+                "inward and the states are not the membrane's (docs/model.md §17)",
                 transform=ax.transAxes, ha="right", va="bottom", fontsize=8, color="#444444")
         assumed = " (assumed: the paper gives none)" if d["pressure_assumed"] else ""
         ax.set_title(f"Fig. 14: flat punch a = {d['indenter_radius_mm']:g} mm on the membrane "

@@ -225,6 +225,23 @@ std::string full_report(const LoadingCurve& c, const Problem& p) {
                      "already have punctured (beyond_puncture = 1 in the table)",
                      beyond,
                      c.points.size()));
+  if (std::holds_alternative<FlatPunch>(p.indenter) && p.preload.pressure_mpa > 0.0 &&
+      p.friction > 0.0) {
+    const auto before = std::count_if(c.points.begin(), c.points.end(), [&](const CurvePoint& q) {
+      return !c.face_slides_outward_from_mm || q.depth_mm < *c.face_slides_outward_from_mm;
+    });
+    if (before > 0)
+      line(out,
+           "NOT THE MEMBRANE'S",
+           fmt::format("{} of the {} points: there the membrane on the punch's face slides inward, "
+                       "where the model's friction assumes outward sliding (docs/model.md §17); {}",
+                       before,
+                       c.points.size(),
+                       c.face_slides_outward_from_mm
+                           ? fmt::format("it slides outward from {} mm on",
+                                         num(*c.face_slides_outward_from_mm))
+                           : std::string("no point slides outward")));
+  }
   line(out, "stick -> slip switch", switch_text(c, p));
   line(out, "Part II appears", part_two_text(c, p));
   out += full_report(c.puncture);

@@ -9,6 +9,7 @@
 
 #include "indentation/curve_following.hpp"
 #include "indentation/dispatch.hpp"
+#include "indentation/face_slip.hpp"
 #include "indentation/puncture_search.hpp"
 #include "indentation/reported_failure.hpp"
 
@@ -19,6 +20,36 @@ namespace {
 SolverOptions without_fields(SolverOptions o) {
   o.record_fields = false;
   return o;
+}
+
+// Under a gas pressure with friction the face's material must slide outward at the puncture,
+// as the model's friction there assumes (indentation/face_slip.hpp).
+PuncturePrediction with_face_slip_checked(const Problem& p, PuncturePrediction out) {
+  if (!out.ok()) return out;
+  if (const auto why = detail::inward_face_slip(p, out.depth_mm)) {
+    out.status = Status::OutsideModel;
+    out.message = "no puncture found where the model holds: " + *why;
+  }
+  return out;
+}
+
+// The first point of the curve from which the face slides outward (the curve's points slide
+// inward first, then outward: a bisection on them), for a flat punch under a gas pressure with
+// friction.
+std::optional<double> face_outward_from(const Problem& p, const std::vector<CurvePoint>& points) {
+  if (!detail::face_friction_direction_matters(p)) return std::nullopt;
+  const auto outward = [&](std::size_t i) {
+    return points[i].depth_mm > 0.0 && !detail::inward_face_slip(p, points[i].depth_mm);
+  };
+  std::size_t lo = 0, hi = points.size();  // outward from hi on (hi = size: nowhere)
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (outward(mid))
+      hi = mid;
+    else
+      lo = mid + 1;
+  }
+  return hi < points.size() ? std::optional<double>(points[hi].depth_mm) : std::nullopt;
 }
 
 }  // namespace
@@ -37,8 +68,10 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
   return detail::reporting_failures<PuncturePrediction>([&] {
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       bool at_switch = false;
-      return detail::find_puncture(
-          p, options, shooting, detail::locate_switch(p, shooting), at_switch);
+      return with_face_slip_checked(
+          p,
+          detail::find_puncture(
+              p, options, shooting, detail::locate_switch(p, shooting), at_switch));
     });
   });
 }
@@ -60,7 +93,10 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
   }
   return detail::reporting_failures<LoadingCurve>([&] {
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
-      return detail::curve_to_puncture(p, shooting, curve, options);
+      auto out = detail::curve_to_puncture(p, shooting, curve, options);
+      out.puncture = with_face_slip_checked(p, std::move(out.puncture));
+      out.face_slides_outward_from_mm = face_outward_from(p, out.points);
+      return out;
     });
   });
 }

@@ -278,6 +278,31 @@ TEST(PressurisedFriction, WhereTheFaceSlidesOutward) {
   }
 }
 
+// The library tells the curve's points whose face slides inward (not the membrane's states)
+// from the rest: its first outward point lies where the two-state comparison above puts the
+// change of direction (lubricated: inward at 1 mm, outward at 2 mm; dry: inward at 10 mm,
+// outward at 20 mm), and a puncture where the face slides outward stays a puncture.
+TEST(PressurisedFriction, TheCurveNamesWhereTheFaceStartsSlidingOutward) {
+  for (const double mu : {0.18, 1.95}) {
+    SCOPED_TRACE(fmt::format("mu' {}", mu));
+    CurveOptions curve;
+    curve.depths_mm = mu < 1.0 ? std::vector<double>{0.5, 1.0, 1.5, 2.0, 3.0, 4.0}
+                               : std::vector<double>{5.0, 10.0, 15.0, 20.0, 25.0};
+    const auto c = loading_curve(rough_flat(mu), curve);
+    ASSERT_TRUE(c.ok()) << c.message;
+    ASSERT_TRUE(c.face_slides_outward_from_mm.has_value());
+    EXPECT_GT(*c.face_slides_outward_from_mm, mu < 1.0 ? 1.0 : 10.0);
+    EXPECT_LE(*c.face_slides_outward_from_mm, mu < 1.0 ? 2.0 : 20.0);
+    EXPECT_GT(face_slip_range(rough_flat(mu), *c.face_slides_outward_from_mm, 0.01).first, 0.0);
+  }
+  // Without friction or without gas the question does not arise.
+  CurveOptions curve;
+  curve.depths_mm = {1.0, 2.0};
+  EXPECT_FALSE(loading_curve(rough_flat(0.0), curve).face_slides_outward_from_mm.has_value());
+  Problem unpressurised;
+  EXPECT_FALSE(loading_curve(unpressurised, curve).face_slides_outward_from_mm.has_value());
+}
+
 // The seed's Fig. 14 situation: its steel indenter of radius 1 mm on an inflated membrane (the
 // paper gives no pressure nor balloon size: the paper's membrane at 3e-4 MPa), lubricated (0.18)
 // and dry (1.95): both puncture, the dry membrane later and at a larger force (as measured).
