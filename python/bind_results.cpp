@@ -218,6 +218,10 @@ void bind_results(py::module_& m) {
       .def_readonly("crack_reference_radius_mm", &PuncturePrediction::crack_reference_radius_mm)
       .def_readonly("crack_radius_mm", &PuncturePrediction::crack_radius_mm)
       .def_readonly("crack_location", &PuncturePrediction::crack_location)
+      .def_readonly("energy_to_puncture_mj",
+                    &PuncturePrediction::energy_to_puncture_mj,
+                    "area under the force-depth curve to puncture [mJ = N mm], or None (asked "
+                    "by SolverOptions.energy_to_puncture)")
       .def_property_readonly(
           "state",
           [](py::object self) { return member_with_problem(self, &PuncturePrediction::state); },

@@ -48,6 +48,11 @@ struct PuncturePrediction : Outcome {
   // sliding one at the switch depth, or (stage Stick) the held one when sliding at that depth
   // would stretch it without bound past the criterion (beyond a limit load).
   bool at_switch = false;
+  // The indenter's work to puncture, the area under the force-depth curve from zero depth to the
+  // puncture depth [mJ = N mm] (ASTM F1306's energy to perforation): with SolverOptions::
+  // energy_to_puncture only, and empty (with a note in `message`) if the path could not be
+  // followed.  The force's jump at a stick -> slip switch happens at one depth and adds nothing.
+  std::optional<double> energy_to_puncture_mj;
   Equilibrium state;  // the full state at puncture
 };
 
