@@ -581,11 +581,15 @@ void bind_problem(py::module_& m) {
       .def_readwrite("max_shooting_iterations", &SolverOptions::max_shooting_iterations)
       .def_readwrite("max_steps", &SolverOptions::max_steps)
       .def_readwrite("record_fields", &SolverOptions::record_fields)
+      .def_readwrite("energy_to_puncture",
+                     &SolverOptions::energy_to_puncture,
+                     "fill PuncturePrediction.energy_to_puncture_mj (costs about a third of a "
+                     "200-point curve)")
       .def("__repr__", [](const SolverOptions& s) {
         return fmt::format(
             "SolverOptions(integration_rel_tol={:g}, integration_abs_tol={:g}, shooting_tol={:g}, "
             "curve_tol={:g}, field_points={}, max_shooting_iterations={}, max_steps={}, "
-            "record_fields={})",
+            "record_fields={}, energy_to_puncture={})",
             s.integration_rel_tol,
             s.integration_abs_tol,
             s.shooting_tol,
@@ -593,7 +597,8 @@ void bind_problem(py::module_& m) {
             s.field_points,
             s.max_shooting_iterations,
             s.max_steps,
-            s.record_fields);
+            s.record_fields,
+            s.energy_to_puncture);
       });
   copyable(options);
 }

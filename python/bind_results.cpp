@@ -221,6 +221,10 @@ void bind_results(py::module_& m) {
       .def_readonly("criterion",
                     &PuncturePrediction::criterion,
                     "the criterion met first, in words (e.g. 'critical I1 = 95.2')")
+      .def_readonly("energy_to_puncture_mj",
+                    &PuncturePrediction::energy_to_puncture_mj,
+                    "area under the force-depth curve to puncture [mJ = N mm], or None (asked "
+                    "by SolverOptions.energy_to_puncture)")
       .def_property_readonly(
           "state",
           [](py::object self) { return member_with_problem(self, &PuncturePrediction::state); },

@@ -8,6 +8,7 @@
 #include "output.hpp"
 #include "progress.hpp"
 #include "puncture/loading_curve.hpp"
+#include "standard_test.hpp"
 
 namespace puncture::cli {
 
@@ -29,11 +30,12 @@ void add_curve_options(CLI::App& app, CurveFlags& f) {
       ->capture_default_str();
 }
 
-std::string run_curve(const Problem& problem, const CurveFlags& f, Format format) {
+std::string run_curve(const Problem& problem, const CurveFlags& f, Format format,
+                      const std::string& test) {
   if (!std::isfinite(f.max_depth_mm) || f.max_depth_mm < 0.0)
     throw InputError(fmt::format(
         "--max-depth: must be a finite number >= 0 mm (0 = to puncture), got {}", f.max_depth_mm));
-  CurveReport report{problem, f.points, f.max_depth_mm, {}};
+  CurveReport report{problem, f.points, f.max_depth_mm, {}, {}};
   {
     Progress progress("curve");
     progress.note("locating the puncture point and the stage switch");
@@ -42,13 +44,16 @@ std::string run_curve(const Problem& problem, const CurveFlags& f, Format format
     options.max_depth_mm = f.max_depth_mm;
     if (progress.enabled())
       options.progress = [&progress](int done, int total) { progress.update(done, total); };
-    report.curve = loading_curve(problem, options);
+    SolverOptions solver;
+    solver.energy_to_puncture = true;
+    report.curve = loading_curve(problem, options, solver);
   }
   if (!report.curve.ok())
     throw SolveError(fmt::format("the loading curve failed ({}): {}",
                                  to_string(report.curve.status),
                                  report.curve.message),
                      report.curve.status);
+  if (test == kAstmF1306) report.astm_f1306 = astm_f1306_outputs(report.curve);
   return render(report, format);
 }
 

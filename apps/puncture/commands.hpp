@@ -14,7 +14,10 @@ struct CurveFlags {
   double max_depth_mm = 0.0;  // 0: to puncture
 };
 void add_curve_options(CLI::App& app, CurveFlags& flags);
-std::string run_curve(const Problem& problem, const CurveFlags& flags, Format format);
+// `test`: the --test the problem was set up for ("none", or a standard whose outputs the report
+// adds, standard_test.hpp); likewise for run_puncture.
+std::string run_curve(const Problem& problem, const CurveFlags& flags, Format format,
+                      const std::string& test = "none");
 
 // `state`: one equilibrium at a force or a depth.
 struct StateFlags {
@@ -28,6 +31,6 @@ void add_state_options(CLI::App& state, StateFlags& flags);
 std::string run_state(const Problem& problem, const StateFlags& flags, Format format);
 
 // `puncture`: the predicted puncture point alone.
-std::string run_puncture(const Problem& problem, Format format);
+std::string run_puncture(const Problem& problem, Format format, const std::string& test = "none");
 
 }  // namespace puncture::cli

@@ -246,17 +246,18 @@ int main(int argc, char** argv) {
     if (state->parsed())
       text = run_state(problem, state_flags, format);
     else if (puncture->parsed())
-      text = run_puncture(problem, format);
+      text = run_puncture(problem, format, problem_flags.test);
     else
-      text = run_curve(problem, curve_flags, format);
+      text = run_curve(problem, curve_flags, format, problem_flags.test);
     write_output(output_flags, text);
     if (plot) {
       // The plotting script reads the JSON output; computed again unless that is the format
       // asked for (the result is deterministic, and a curve takes milliseconds).
       const bool by_state = state->parsed();
-      const std::string json = format == Format::Json ? text
-                               : by_state ? run_state(problem, state_flags, Format::Json)
-                                          : run_curve(problem, curve_flags, Format::Json);
+      const std::string json =
+          format == Format::Json ? text
+          : by_state             ? run_state(problem, state_flags, Format::Json)
+                     : run_curve(problem, curve_flags, Format::Json, problem_flags.test);
       run_plot_script(by_state ? "state" : "curve", json, plot_path);
     }
     return kExitOk;

@@ -44,6 +44,17 @@ json criteria_json(const Equilibrium& e, const Problem& p) {
   return out;
 }
 
+// The standard's outputs (null when the report has none).
+json astm_f1306_json(const std::optional<AstmF1306Outputs>& o) {
+  if (!o) return nullptr;
+  return {{"probe_tip_radius_mm", kAstmF1306TipRadiusMm},
+          {"opening_radius_mm", kAstmF1306OpeningRadiusMm},
+          {"maximum_force_n", finite(o->maximum_force_n, "maximum force")},
+          {"penetration_to_perforation_mm", finite(o->penetration_mm, "penetration")},
+          {"energy_to_perforation_mj",
+           o->energy_mj ? json(finite(*o->energy_mj, "energy to perforation")) : json()}};
+}
+
 json state_json(const Equilibrium& e) {
   json out = {
       {"status", to_string(e.status)},
@@ -107,9 +118,11 @@ json curve_json(const CurveReport& r) {
 }  // namespace
 
 std::string json_text(const CurveReport& r) {
-  return dump({{"inputs", inputs_json(r.problem)},
-               {"curve", curve_json(r)},
-               {"puncture", puncture_json(r.curve.puncture, r.problem)}});
+  json out = {{"inputs", inputs_json(r.problem)},
+              {"curve", curve_json(r)},
+              {"puncture", puncture_json(r.curve.puncture, r.problem)}};
+  if (r.astm_f1306) out["astm_f1306"] = astm_f1306_json(r.astm_f1306);
+  return dump(out);
 }
 
 std::string json_text(const StateReport& r) {
@@ -150,8 +163,9 @@ std::string json_text(const VerifyReport& r) {
 }
 
 std::string json_text(const PunctureReport& r) {
-  return dump(
-      {{"inputs", inputs_json(r.problem)}, {"puncture", puncture_json(r.puncture, r.problem)}});
+  json out = {{"inputs", inputs_json(r.problem)}, {"puncture", puncture_json(r.puncture, r.problem)}};
+  if (r.astm_f1306) out["astm_f1306"] = astm_f1306_json(r.astm_f1306);
+  return dump(out);
 }
 
 }  // namespace puncture::cli

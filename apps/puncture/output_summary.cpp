@@ -25,6 +25,21 @@ std::vector<std::size_t> sampled_rows(const std::vector<CurvePoint>& points) {
   return {rows.begin(), rows.end()};
 }
 
+// The standard's outputs, named as it names them.
+void add_astm_f1306(std::string& out, const std::optional<AstmF1306Outputs>& o) {
+  if (!o) return;
+  out += fmt::format(
+      "ASTM F1306 (probe tip radius {} mm, opening radius {} mm)\n"
+      "  maximum force                      {} N\n"
+      "  probe penetration to perforation   {} mm\n"
+      "  energy to perforation              {}\n",
+      num(kAstmF1306TipRadiusMm, "tip radius"),
+      num(kAstmF1306OpeningRadiusMm, "opening radius"),
+      num(o->maximum_force_n, "maximum force"),
+      num(o->penetration_mm, "penetration"),
+      o->energy_mj ? num(*o->energy_mj, "energy") + " mJ" : std::string("n/a"));
+}
+
 }  // namespace
 
 std::string summary_text(const CurveReport& r) {
@@ -36,6 +51,7 @@ std::string summary_text(const CurveReport& r) {
                      num(end, "end depth"),
                      r.max_depth_mm > 0.0 ? ", set by --max-depth" : "");
   out += full_report(c, r.problem);
+  add_astm_f1306(out, r.astm_f1306);
   out += "Curve (sampled; --format csv for every point)\n";
   text_table(out, curve_table(c.points), sampled_rows(c.points));
   return out;
@@ -85,6 +101,7 @@ std::string summary_text(const PunctureReport& r) {
   // With --criterion: which of them the membrane meets first.
   if (!r.problem.criteria.empty() && r.puncture.ok())
     out += fmt::format("  {:<24}{}\n", "criterion met first", r.puncture.criterion);
+  add_astm_f1306(out, r.astm_f1306);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "criterion_spec.hpp"
 #include "parameter_flags.hpp"
 #include "puncture/material_presets.hpp"
+#include "standard_test.hpp"
 #include "stick_spec.hpp"
 
 namespace puncture::cli {
@@ -157,25 +158,40 @@ Material material_of(const ProblemFlags& f, std::vector<std::string>& errors) {
 }  // namespace
 
 void add_problem_options(CLI::App& app, ProblemFlags& f) {
-  app.add_option(
-         "--clamp-radius", f.clamp_radius_mm, "Inner radius A of the clamping rings [mm] (> 0)")
+  f.clamp_radius_option =
+      app.add_option(
+             "--clamp-radius", f.clamp_radius_mm, "Inner radius A of the clamping rings [mm] (> 0)")
+          ->group(kGeometry)
+          ->capture_default_str();
+  app.add_option("--test",
+                 f.test,
+                 "A standard test's probe and opening, the membrane from the other\n"
+                 "flags: none, or astm-f1306 (ASTM F1306, puncture of flexible barrier\n"
+                 "films: sphere-tipped probe of tip radius 1.6 mm (3.2 mm diameter),\n"
+                 "opening radius 17.45 mm; 'puncture' and 'curve' add the standard's\n"
+                 "outputs: maximum force [N], probe penetration to perforation [mm],\n"
+                 "energy to perforation [mJ]).  Not with --indenter,\n"
+                 "--indenter-radius or --clamp-radius")
       ->group(kGeometry)
+      ->check(CLI::IsMember(std::vector<std::string>{"none", kAstmF1306}))
       ->capture_default_str();
-  app.add_option("--indenter",
-                 f.indenter,
-                 "Probe shape: flat (the paper's sharp flat-ended cylinder) or\n"
-                 "sphere-tipped (a cylinder ending in a hemisphere of the same radius;\n"
-                 "sliding only, --stick none; with --friction > 0 only while the contact\n"
-                 "stays on the hemisphere)")
-      ->group(kGeometry)
-      ->check(CLI::IsMember({"flat", "sphere-tipped"}))
-      ->capture_default_str();
-  app.add_option("--indenter-radius",
-                 f.indenter_radius_mm,
-                 "Radius a of the indenter's cylinder (and of the sphere-tipped\n"
-                 "probe's hemisphere) [mm] (> 0 and smaller than the clamp radius)")
-      ->group(kGeometry)
-      ->capture_default_str();
+  f.indenter_option =
+      app.add_option("--indenter",
+                     f.indenter,
+                     "Probe shape: flat (the paper's sharp flat-ended cylinder) or\n"
+                     "sphere-tipped (a cylinder ending in a hemisphere of the same radius;\n"
+                     "sliding only, --stick none; with --friction > 0 only while the contact\n"
+                     "stays on the hemisphere)")
+          ->group(kGeometry)
+          ->check(CLI::IsMember({"flat", "sphere-tipped"}))
+          ->capture_default_str();
+  f.indenter_radius_option =
+      app.add_option("--indenter-radius",
+                     f.indenter_radius_mm,
+                     "Radius a of the indenter's cylinder (and of the sphere-tipped\n"
+                     "probe's hemisphere) [mm] (> 0 and smaller than the clamp radius)")
+          ->group(kGeometry)
+          ->capture_default_str();
   app.add_option("--thickness", f.thickness_mm, "Undeformed membrane thickness H [mm] (> 0)")
       ->group(kGeometry)
       ->capture_default_str();
@@ -356,6 +372,21 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
     p.indenter = SphereTipped{f.indenter_radius_mm};
   else
     p.indenter = FlatPunch{f.indenter_radius_mm};
+  if (f.test == kAstmF1306) {
+    // The standard fixes the probe and the opening: a flag that sets them too is a conflict.
+    for (const CLI::Option* given :
+         {f.indenter_option, f.indenter_radius_option, f.clamp_radius_option})
+      if (given && given->count() > 0)
+        errors.push_back(fmt::format(
+            "{}: conflicts with --test {}, which sets the probe (sphere-tipped, tip radius {} mm) "
+            "and the opening (radius {} mm); give one or the other",
+            given->get_name(),
+            kAstmF1306,
+            kAstmF1306TipRadiusMm,
+            kAstmF1306OpeningRadiusMm));
+    p.indenter = SphereTipped{kAstmF1306TipRadiusMm};
+    p.geometry.clamp_radius_mm = kAstmF1306OpeningRadiusMm;
+  }
   p.geometry.thickness_mm = f.thickness_mm;
   p.preload.prestretch = f.prestretch;
   p.preload.pressure_mpa = f.pressure_mpa;

@@ -36,6 +36,10 @@ struct ProblemFlags {
   std::string part_two_equation = "ring-balance";
   CLI::Option* material_option = nullptr;
   CLI::Option* material_preset_option = nullptr;
+  std::string test = "none";  // a standard test's probe and opening (standard_test.hpp)
+  CLI::Option* clamp_radius_option = nullptr;
+  CLI::Option* indenter_option = nullptr;
+  CLI::Option* indenter_radius_option = nullptr;
   CLI::Option* j_lim_option = nullptr;
   CLI::Option* mr_alpha_option = nullptr;
   CLI::Option* shear_modulus_option = nullptr;

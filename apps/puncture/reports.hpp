@@ -7,14 +7,16 @@
 #include "puncture/loading_curve.hpp"
 #include "puncture/problem.hpp"
 #include "puncture/verification.hpp"
+#include "standard_test.hpp"
 
 namespace puncture::cli {
 
 struct CurveReport {
   Problem problem;
   int points_requested = 0;
-  double max_depth_mm = 0.0;  // 0: to puncture
-  LoadingCurve curve;         // converged
+  double max_depth_mm = 0.0;                   // 0: to puncture
+  LoadingCurve curve;                          // converged
+  std::optional<AstmF1306Outputs> astm_f1306;  // with --test astm-f1306
 };
 
 struct StateReport {
@@ -27,7 +29,8 @@ struct StateReport {
 
 struct PunctureReport {
   Problem problem;
-  PuncturePrediction puncture;  // found
+  PuncturePrediction puncture;                 // found
+  std::optional<AstmF1306Outputs> astm_f1306;  // with --test astm-f1306
 };
 
 struct VerifyReport {

@@ -92,7 +92,8 @@ Table puncture_table(const PuncturePrediction& p) {
                "max_i1",
                "crack_reference_radius_mm",
                "crack_radius_mm",
-               "crack_location"};
+               "crack_location",
+               "energy_to_puncture_mj"};
   t.rows.push_back({p.force_n,
                     p.normalized_force,
                     p.depth_mm,
@@ -102,7 +103,8 @@ Table puncture_table(const PuncturePrediction& p) {
                     p.state.max_first_invariant,
                     p.crack_reference_radius_mm,
                     p.crack_radius_mm,
-                    p.crack_location});
+                    p.crack_location,
+                    p.energy_to_puncture_mj});
   return t;
 }
 

@@ -33,7 +33,8 @@ Table fields_table(const MembraneFields& fields);
 Table state_fields_table(const Equilibrium& e);
 
 // One row: force_n, normalized_force, depth_mm, stage, configuration, part_three_stretch,
-// max_i1, crack_reference_radius_mm, crack_radius_mm, crack_location.
+// max_i1, crack_reference_radius_mm, crack_radius_mm, crack_location, energy_to_puncture_mj
+// (empty when not computed).
 Table puncture_table(const PuncturePrediction& puncture);
 
 // One row per check: group, quantity, condition, shooting, second_method, relative_difference,

@@ -51,6 +51,11 @@ struct PuncturePrediction : Outcome {
   // The criterion met first (describe(FailureCriterion), e.g. "critical I1 = 95.2"); the crack's
   // place above is where its measure is largest.
   std::string criterion;
+  // The indenter's work to puncture, the area under the force-depth curve from zero depth to the
+  // puncture depth [mJ = N mm] (ASTM F1306's energy to perforation): with SolverOptions::
+  // energy_to_puncture only, and empty (with a note in `message`) if the path could not be
+  // followed.  The force's jump at a stick -> slip switch happens at one depth and adds nothing.
+  std::optional<double> energy_to_puncture_mj;
   Equilibrium state;  // the full state at puncture
 };
 

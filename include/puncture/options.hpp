@@ -19,6 +19,9 @@ struct SolverOptions {
   int max_shooting_iterations = 100;  // per boundary-value solve
   int max_steps = 100000;             // integration steps per part before giving up
   bool record_fields = true;          // fill Equilibrium::fields (off in inner loops)
+  // Fill PuncturePrediction::energy_to_puncture_mj, the area under the force-depth curve to
+  // puncture: it costs about a third of a 200-point loading curve, so it is off unless asked.
+  bool energy_to_puncture = false;
 };
 
 }  // namespace puncture

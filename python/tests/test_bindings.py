@@ -32,6 +32,20 @@ def test_default_puncture_force_matches_cli(cli):
     assert round(prediction.force_n, 4) == 0.6994  # README, docs/model.md
 
 
+def test_energy_to_puncture_matches_cli(cli):
+    plain = pu.predict_puncture(pu.Problem())
+    assert plain.energy_to_puncture_mj is None  # off unless asked: it costs a curve's solves
+    options = pu.SolverOptions()
+    options.energy_to_puncture = True
+    prediction = pu.predict_puncture(pu.Problem(), options)
+    from_cli = cli.json("puncture")["puncture"]
+    assert rel(prediction.energy_to_puncture_mj, from_cli["energy_to_puncture_mj"]) < 1e-9
+    assert prediction.force_n == plain.force_n
+    # The curve's puncture carries the same number.
+    curve = pu.loading_curve(pu.Problem(), points=20, options=options)
+    assert rel(curve.puncture.energy_to_puncture_mj, prediction.energy_to_puncture_mj) < 1e-9
+
+
 def test_paper_eq18_puncture_matches_cli(cli):
     problem = pu.Problem(part_two_equation="paper-eq18")
     from_cli = cli.json("puncture", "--part-two-equation", "paper-eq18")["puncture"]

@@ -8,11 +8,13 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "indentation/depth_newton.hpp"
 #include "indentation/puncture_search.hpp"
 #include "indentation/solver_scales.hpp"
+#include "numerics/gauss_legendre.hpp"
 #include "puncture/loading_curve.hpp"
 
 namespace puncture::detail {
@@ -169,6 +171,94 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
   return true;
 }
 
+// The change of configuration on the sliding branch (the flat punch: Part II appears) as the
+// loading path meets it.
+struct SlidingChange {
+  std::optional<ScaledSolution> state;  // where the sliding membrane changes configuration
+  std::optional<double> depth_mm;       // where the path changes configuration [mm]
+  // A membrane held past that depth slides straight into the changed configuration at the
+  // stick -> slip switch (depth_mm is then the switch's, and `state` empty).
+  bool at_switch = false;
+};
+
+template <class Shooting>
+SlidingChange sliding_change(const Shooting& shooting, const StageBoundary& boundary,
+                             double big_a) {
+  SlidingChange out;
+  if (boundary.first_stage != Stage::Slip && !boundary.switches) return out;
+  out.state = shooting.contact().slip_change(shooting);
+  if (!out.state) return out;
+  out.depth_mm = out.state->depth * big_a;
+  if (boundary.switches && *out.depth_mm < boundary.depth_mm) {
+    out.at_switch = true;
+    out.depth_mm = boundary.depth_mm;
+    out.state.reset();
+  }
+  return out;
+}
+
+// Panels of the 10-point Gauss-Legendre rule on each smooth piece of the path; on a pre-tensioned
+// membrane (pre-stretched or inflated) the first, from zero depth, graded towards it: there the
+// force is not smooth at zero depth (~ depth / log(depth), as a point load's), while on a slack
+// one it goes as depth^3 and depths far below 1e-3 of the puncture's are beyond the solver.
+// tests/solver/puncture_energy_test.cpp measures the result against dense curves.
+inline constexpr int kEnergyPanels = 12;
+inline constexpr int kEnergyGradedPanels = 10;
+
+// Sets the puncture's energy to puncture [mJ], int_0^depth F d(depth) to the puncture depth (the
+// switch's, when it punctures there).  F(depth) is smooth on each piece of the path (held; sliding
+// before and after the contact's change of configuration), so each piece gets composite
+// Gauss-Legendre quadrature, the forces at its nodes from the curve driver (follow_curve); the
+// jump at the switch is at one depth and adds no area.  A path that cannot be followed leaves the
+// energy empty and says why in the message.
+template <class Shooting>
+void add_energy_to_puncture(const Problem& p, const Shooting& shooting, double curve_tol,
+                            const StageBoundary& boundary, const SlidingChange& change,
+                            bool puncture_at_switch, PuncturePrediction& puncture,
+                            int panels = kEnergyPanels) {
+  const double end = puncture_at_switch ? boundary.depth_mm : puncture.depth_mm;
+  const bool slides = !(puncture_at_switch && puncture.stage == Stage::Stick);
+  const bool has_switch = boundary.switches && boundary.depth_mm <= end && slides;
+  std::vector<double> cuts{0.0};
+  if (boundary.switches && boundary.depth_mm < end) cuts.push_back(boundary.depth_mm);
+  if (change.state && *change.depth_mm > cuts.back() && *change.depth_mm < end)
+    cuts.push_back(*change.depth_mm);
+  cuts.push_back(end);
+  QuadratureNodes q;
+  const bool pretensioned = p.preload.pressure_mpa > 0.0 || p.preload.prestretch > 1.0;
+  append_graded_gauss_legendre(cuts[0], cuts[1], panels, pretensioned ? kEnergyGradedPanels : 0, q);
+  for (std::size_t i = 1; i + 1 < cuts.size(); ++i)
+    append_gauss_legendre(cuts[i], cuts[i + 1], panels, q);
+  CurveOptions at_nodes;
+  at_nodes.depths_mm = q.nodes;
+  LoadingCurve path;
+  path.part_two_onset_depth_mm = change.depth_mm;
+  auto note = [&](const std::string& why) {
+    puncture.message +=
+        (puncture.message.empty() ? "" : "; ") + fmt::format("no energy to puncture: {}", why);
+  };
+  if (q.nodes.empty()) {
+    puncture.energy_to_puncture_mj = 0.0;
+    return;
+  }
+  if (!follow_curve(
+          p, shooting, curve_tol, boundary, end, has_switch, change.state, at_nodes, path)) {
+    note(path.message);
+    return;
+  }
+  // The driver adds both states at the switch depth, which no node is: the nodes' points are
+  // the others, in order.
+  double work = 0.0;
+  std::size_t j = 0;
+  for (const CurvePoint& pt : path.points)
+    if (j < q.nodes.size() && pt.depth_mm == q.nodes[j]) work += q.weights[j++] * pt.force_n;
+  if (j != q.nodes.size()) {
+    note("the path's depths do not match the quadrature's");
+    return;
+  }
+  puncture.energy_to_puncture_mj = work;
+}
+
 // The curve of a valid problem; `shooting` (made with `options` without fields) serves every
 // solve, `options` makes the state at puncture physical.
 template <class Shooting>
@@ -209,25 +299,24 @@ LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
     out.stick_slip.depth_mm = boundary.depth_mm;
     out.stick_slip.force_stuck_n = boundary.force_stuck_n;
   }
-  // The change of configuration on the sliding branch (the flat punch: Part II appears); a
-  // membrane held past that depth slides straight into the changed configuration at the switch.
-  std::optional<ScaledSolution> onset;
-  if (boundary.first_stage == Stage::Slip || boundary.switches) {
-    onset = shooting.contact().slip_change(shooting);
-    if (onset) {
-      out.part_two_onset_depth_mm = onset->depth * big_a;
-      out.part_two_onset_force_n = onset->f * scale;
-      if (boundary.switches && onset->depth * big_a < boundary.depth_mm) {
-        out.part_two_onset_at_switch = true;
-        out.part_two_onset_depth_mm = boundary.depth_mm;
-        out.part_two_onset_force_n.reset();  // the sliding force at the switch, set below
-        onset.reset();
-      }
-    }
-  }
-  if (!follow_curve(
-          p, shooting, options.curve_tol, boundary, end_depth, has_switch, onset, curve, out))
+  const SlidingChange change = sliding_change(shooting, boundary, big_a);
+  out.part_two_onset_depth_mm = change.depth_mm;
+  out.part_two_onset_at_switch = change.at_switch;
+  // At the switch: the sliding force there, set below.
+  if (change.state) out.part_two_onset_force_n = change.state->f * scale;
+  if (!follow_curve(p,
+                    shooting,
+                    options.curve_tol,
+                    boundary,
+                    end_depth,
+                    has_switch,
+                    change.state,
+                    curve,
+                    out))
     return out;
+  if (options.energy_to_puncture && out.puncture.ok())
+    add_energy_to_puncture(
+        p, shooting, options.curve_tol, boundary, change, puncture_at_switch, out.puncture);
   // Past the puncture depth the membrane has punctured, whatever its I1 does after a switch.
   if (out.puncture.ok())
     for (auto& pt : out.points)

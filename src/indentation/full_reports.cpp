@@ -200,6 +200,12 @@ std::string full_report(const PuncturePrediction& p) {
        "puncture force",
        fmt::format("{} N (F / 2 pi G H A = {})", num(p.force_n), num(p.normalized_force)));
   line(out, "puncture depth", num(p.depth_mm) + " mm");
+  if (p.energy_to_puncture_mj)
+    line(out,
+         "energy to puncture",
+         num(*p.energy_to_puncture_mj) + " mJ (the area under the force-depth curve)");
+  else if (!p.message.empty())
+    line(out, "note", p.message);
   line(out, "stage", to_string(p.stage));
   line(out, "configuration", to_string(p.configuration));
   line(out, "Part III stretch", num(p.part_three_stretch));

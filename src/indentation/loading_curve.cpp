@@ -68,10 +68,21 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
   return detail::reporting_failures<PuncturePrediction>([&] {
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       bool at_switch = false;
-      return with_face_slip_checked(
-          p,
-          detail::find_puncture(
-              p, options, shooting, detail::locate_switch(p, shooting), at_switch));
+      const auto switch_point = detail::locate_switch(p, shooting);
+      auto puncture = with_face_slip_checked(
+          p, detail::find_puncture(p, options, shooting, switch_point, at_switch));
+      if (options.energy_to_puncture && puncture.ok()) {
+        const auto& boundary = switch_point.boundary;
+        detail::add_energy_to_puncture(
+            p,
+            shooting,
+            options.curve_tol,
+            boundary,
+            detail::sliding_change(shooting, boundary, detail::solver_scales(p).length_mm),
+            at_switch,
+            puncture);
+      }
+      return puncture;
     });
   });
 }

@@ -1,12 +1,14 @@
 #pragma once
 // Shared by the tests of indentation under a gas pressure (pressurised_test.cpp,
 // pressurised_friction_test.cpp): the paper's inflated membrane, and the quadratures of the
-// constant-pressure energy balance (the work of F and Pi = U - p V from a state's fields).
+// constant-pressure energy balance (the work of F; Pi = U - p V from a state's fields is
+// membrane_potential.hpp's).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
+#include "membrane_potential.hpp"
 #include "solver_test_support.hpp"
 
 namespace puncture::test {
@@ -30,35 +32,6 @@ inline SolverOptions sampled(int points) {
   SolverOptions o;
   o.field_points = points;
   return o;
-}
-
-// A quadrature along the fields with its error estimate: the trapezoid rule on every sample and
-// on every other one, Richardson's extrapolation of the two, and (T_h - T_2h) / 3.
-struct Quadrature {
-  double value;
-  double error;
-};
-inline Quadrature integrate(const std::vector<double>& x, const std::vector<double>& y) {
-  const double fine = trapezoid(x, y, 1), coarse = trapezoid(x, y, 2);
-  return {fine + (fine - coarse) / 3.0, std::abs(fine - coarse) / 3.0};
-}
-
-// Pi = U - p V of a state [mJ] from its fields alone: U = 2 pi H int W R dR over every part, V =
-// pi int y d(r^2) the volume between the membrane and the clamp plane (y the height above it:
-// the clamp's deflection minus the point's; the probe's side, where r is constant, adds none).
-inline Quadrature potential(const Problem& p, const Equilibrium& e) {
-  const auto& m = e.fields;
-  std::vector<double> r_ref, w_r, r_squared, height;
-  const double clamp_z = m.deflection_mm.back();
-  for (std::size_t i = 0; i < m.size(); ++i) {
-    r_ref.push_back(m.reference_radius_mm[i]);
-    w_r.push_back(energy_density_mpa(p, m.radial_stretch[i], m.hoop_stretch[i]) * r_ref.back());
-    r_squared.push_back(m.radius_mm[i] * m.radius_mm[i]);
-    height.push_back(clamp_z - m.deflection_mm[i]);
-  }
-  const Quadrature u = integrate(r_ref, w_r), v = integrate(r_squared, height);
-  const double scale_u = 2.0 * kPi * p.geometry.thickness_mm, pv = kPi * p.preload.pressure_mpa;
-  return {scale_u * u.value - pv * v.value, scale_u * u.error + pv * v.error};
 }
 
 // The indenter's work from the inflated dome to `depth` [mJ]: Simpson's rule on a 401-point
