@@ -106,8 +106,8 @@ json curve_json(const CurveReport& r) {
   if (r.max_depth_mm > 0.0) out["max_depth_mm"] = finite(r.max_depth_mm, "max depth");
   // A flat punch under a gas pressure with friction: the points before it are not the membrane's
   // states (its face slides inward there).
-  if (std::holds_alternative<FlatPunch>(r.problem.indenter) && r.problem.preload.pressure_mpa > 0.0 &&
-      r.problem.friction > 0.0)
+  if (std::holds_alternative<FlatPunch>(r.problem.indenter) &&
+      r.problem.preload.pressure_mpa > 0.0 && r.problem.friction > 0.0)
     out["face_slides_outward_from_mm"] =
         c.face_slides_outward_from_mm
             ? json(finite(*c.face_slides_outward_from_mm, "face's outward sliding depth"))
@@ -163,7 +163,8 @@ std::string json_text(const VerifyReport& r) {
 }
 
 std::string json_text(const PunctureReport& r) {
-  json out = {{"inputs", inputs_json(r.problem)}, {"puncture", puncture_json(r.puncture, r.problem)}};
+  json out = {{"inputs", inputs_json(r.problem)},
+              {"puncture", puncture_json(r.puncture, r.problem)}};
   if (r.astm_f1306) out["astm_f1306"] = astm_f1306_json(r.astm_f1306);
   return dump(out);
 }
