@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "calibration/sample_statistics.hpp"
 #include "puncture/calibration.hpp"
 #include "puncture/inflation.hpp"
 
@@ -38,18 +39,7 @@ std::vector<double> pole_stretches(const std::vector<BurstTest>& tests) {
 }
 
 // Mean, and with two tests or more the sample standard deviation and the standard error.
-void summarise(CriticalI1Estimate& out) {
-  const auto n = static_cast<double>(out.first_invariants.size());
-  double sum = 0.0;
-  for (const double i1 : out.first_invariants) sum += i1;
-  out.mean = sum / n;
-  if (out.first_invariants.size() >= 2) {
-    double ss = 0.0;
-    for (const double i1 : out.first_invariants) ss += (i1 - out.mean) * (i1 - out.mean);
-    out.standard_deviation = std::sqrt(ss / (n - 1.0));
-    out.standard_error = *out.standard_deviation / std::sqrt(n);
-  }
-}
+void summarise(CriticalI1Estimate& out) { detail::summarise_sample(out.first_invariants, out); }
 
 }  // namespace
 

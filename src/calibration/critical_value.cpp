@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "calibration/sample_statistics.hpp"
 #include "puncture/inflation.hpp"
 
 namespace puncture {
@@ -14,16 +15,7 @@ namespace puncture {
 namespace {
 
 void summarise(CriticalValueEstimate& out) {
-  const auto n = static_cast<double>(out.values.size());
-  double sum = 0.0;
-  for (const double v : out.values) sum += v;
-  out.mean = sum / n;
-  if (out.values.size() >= 2) {
-    double ss = 0.0;
-    for (const double v : out.values) ss += (v - out.mean) * (v - out.mean);
-    out.standard_deviation = std::sqrt(ss / (n - 1.0));
-    out.standard_error = *out.standard_deviation / std::sqrt(n);
-  }
+  detail::summarise_sample(out.values, out);
   out.criterion = criterion_from_name(criterion_name(out.criterion), out.mean);
 }
 
