@@ -80,8 +80,12 @@ void add_inflate_command(CLI::App& app, InflateFlags& f) {
 
 std::string run_inflate(const CLI::App& app, const ProblemFlags& pf, const CurveFlags& curve,
                         const InflateFlags& f, Format format) {
-  for (const char* flag :
-       {"--indenter", "--indenter-radius", "--friction", "--stick", "--part-two-equation"})
+  for (const char* flag : {"--indenter",
+                           "--indenter-radius",
+                           "--friction",
+                           "--stick",
+                           "--part-two-equation",
+                           "--test"})
     if (given(app, flag))
       throw InputError(fmt::format(
           "{}: does not apply to 'inflate', an inflation test has no indenter; remove it", flag));
