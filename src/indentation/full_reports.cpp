@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string_view>
 
+#include "indentation/face_slip.hpp"
 #include "puncture/failure.hpp"
 #include "puncture/inflation.hpp"
 #include "puncture/reports.hpp"
@@ -231,8 +232,7 @@ std::string full_report(const LoadingCurve& c, const Problem& p) {
                      "already have punctured (beyond_puncture = 1 in the table)",
                      beyond,
                      c.points.size()));
-  if (std::holds_alternative<FlatPunch>(p.indenter) && p.preload.pressure_mpa > 0.0 &&
-      p.friction > 0.0) {
+  if (detail::face_friction_direction_matters(p)) {
     const auto before = std::count_if(c.points.begin(), c.points.end(), [&](const CurvePoint& q) {
       return !c.face_slides_outward_from_mm || q.depth_mm < *c.face_slides_outward_from_mm;
     });
