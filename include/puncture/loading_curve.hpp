@@ -56,6 +56,10 @@ struct PuncturePrediction : Outcome {
   // energy_to_puncture only, and empty (with a note in `message`) if the path could not be
   // followed.  The force's jump at a stick -> slip switch happens at one depth and adds nothing.
   std::optional<double> energy_to_puncture_mj;
+  // The hoop stretch at the top of Part II [-] when the puncture was solved directly at the
+  // corner (flat punch, sliding with Part II): where a neighbouring problem's search can start
+  // (SolverOptions::puncture_top_stretch_start).  Empty otherwise.
+  std::optional<double> part_two_top_stretch;
   Equilibrium state;  // the full state at puncture
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // How the equations are solved: tolerances and limits.  Defaults give every point of a loading
 // curve converged to better than 1e-8 relative.
+#include <optional>
 
 namespace puncture {
 
@@ -22,6 +23,13 @@ struct SolverOptions {
   // Fill PuncturePrediction::energy_to_puncture_mj, the area under the force-depth curve to
   // puncture: it costs about a third of a 200-point loading curve, so it is off unless asked.
   bool energy_to_puncture = false;
+  // A warm start for the puncture search: the hoop stretch at the top of Part II [-] of a
+  // neighbouring problem's puncture (PuncturePrediction::part_two_top_stretch).  The flat punch's
+  // corner solve polishes its root from there instead of bracketing it; the puncture then agrees
+  // with the cold one to the shooting's tolerance, not bit for bit, and a start from which the
+  // polish does not converge falls back to the cold search.  Unset: cold (a sweep's chains set
+  // it, docs/sweeps.md).
+  std::optional<double> puncture_top_stretch_start;
 };
 
 }  // namespace puncture

@@ -22,6 +22,16 @@ SolverOptions without_fields(SolverOptions o) {
   return o;
 }
 
+// A warm start is a stretch: finite and > 0 (one outside the corner solve's range is not used).
+void check_warm_start(const SolverOptions& o) {
+  if (const auto& start = o.puncture_top_stretch_start;
+      start && !(std::isfinite(*start) && *start > 0.0))
+    throw InvalidInput("puncture_top_stretch_start",
+                       fmt::format("puncture_top_stretch_start: a stretch must be finite and > 0, "
+                                   "got {}",
+                                   *start));
+}
+
 // Under a gas pressure with friction the face's material must slide outward at the puncture,
 // as the model's friction there assumes (indentation/face_slip.hpp).
 PuncturePrediction with_face_slip_checked(const Problem& p, PuncturePrediction out) {
@@ -65,6 +75,7 @@ StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options
 
 PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& options) {
   validate(p);
+  check_warm_start(options);
   return detail::reporting_failures<PuncturePrediction>([&] {
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       bool at_switch = false;
@@ -90,6 +101,7 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
 LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
                            const SolverOptions& options) {
   validate(p);
+  check_warm_start(options);
   if (curve.points < 2)
     throw InvalidInput("points",
                        fmt::format("the curve needs at least 2 points, got {}", curve.points));

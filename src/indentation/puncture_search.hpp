@@ -142,6 +142,7 @@ PuncturePrediction find_puncture_by(const Problem& p, const SolverOptions& optio
   // The puncture state when a search found it already: the sliding state at the switch when the
   // jump to sliding fails the membrane, or the contact model's direct puncture solve.
   std::optional<ScaledSolution> found;
+  std::optional<double> top_stretch;  // of the corner solve's state, a neighbour's warm start
   Stage stage = Stage::Slip;
   double slip_from_f = 0.0, slip_from_g = unloaded_excess(criterion);
   if (boundary.first_stage == Stage::Stick) {
@@ -201,10 +202,12 @@ PuncturePrediction find_puncture_by(const Problem& p, const SolverOptions& optio
     // force along the path, so the first crossing is then this one.
     const auto i1c = critical_first_invariant(criterion);
     const auto direct =
-        i1c ? shooting.contact().direct_puncture(shooting, *i1c) : std::optional<ScaledSolution>();
+        i1c ? shooting.contact().direct_puncture(shooting, *i1c, options.puncture_top_stretch_start)
+            : std::optional<ScaledSolution>();
     if (direct && direct->f >= slip_from_f) {
       f_puncture = direct->f;
       found = *direct;
+      if (direct->configuration == Configuration::SlipWithPartTwo) top_stretch = direct->parameter;
     } else
       f_puncture =
           first_force_where(shooting, Stage::Slip, slip_from_f, slip_from_g, over_critical);
@@ -270,6 +273,7 @@ PuncturePrediction find_puncture_by(const Problem& p, const SolverOptions& optio
     return out;
   }
   out.status = Status::Converged;
+  out.part_two_top_stretch = top_stretch;
   out.state = to_physical(p, shooting.contact(), sol, stage, options);
   out.force_n = out.state.force_n;
   out.normalized_force = units.normalized_force(sol.f);

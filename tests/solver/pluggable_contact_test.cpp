@@ -85,7 +85,8 @@ class BondedDiscContact {
     return std::nullopt;
   }
   template <class Shooting>
-  std::optional<ScaledSolution> direct_puncture(const Shooting&, double) const {
+  std::optional<ScaledSolution> direct_puncture(const Shooting&, double,
+                                                std::optional<double> = {}) const {
     return std::nullopt;
   }
   std::string crack_location(const ScaledSolution&) const { return "Part I"; }

@@ -31,9 +31,12 @@
 //                                            change along the sliding branch (slip_change)
 //   std::optional<ScaledSolution> slip_change(const Shooting&)
 //                                            where the sliding configuration changes, if it does
-//   std::optional<ScaledSolution> direct_puncture(const Shooting&, double critical_i1)
+//   std::optional<ScaledSolution> direct_puncture(const Shooting&, double critical_i1,
+//                                                 std::optional<double> start)
 //                                            a puncture solved directly, when the contact knows
-//                                            one (else the loading path is searched)
+//                                            one (else the loading path is searched); `start`:
+//                                            a neighbouring problem's shooting parameter there
+//                                            (SolverOptions::puncture_top_stretch_start)
 //   std::string crack_location(const ScaledSolution&)   where the largest I1 is, in words
 //   LargestFirstInvariant largest_first_invariant(const ScaledSolution&)
 //                                            where the largest I1 is: part and radii

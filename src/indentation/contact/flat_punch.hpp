@@ -446,9 +446,11 @@ class FlatPunchContact {
   // so marching Part II up from it to a top stretch p (the force an output) and shooting Part I
   // on to the clamp leaves a one-parameter shooting in p.  The state is returned with its fields
   // sampled.  Empty when the puncture is not of that kind (the caller then searches the loading
-  // path).
+  // path).  `top_start`: a neighbouring problem's root p (a warm start), polished from directly;
+  // if that fails the search runs cold.
   template <class Shooting>
-  std::optional<ScaledSolution> direct_puncture(const Shooting& shooting, double i1c) const {
+  std::optional<ScaledSolution> direct_puncture(const Shooting& shooting, double i1c,
+                                                std::optional<double> top_start = {}) const {
     // With friction under pressure the corner's state depends on the whole face: the loading
     // path is searched.
     if (rough_face_) return std::nullopt;
@@ -493,10 +495,28 @@ class FlatPunchContact {
       const auto up = side_from_corner(*l3, p, shooting.coarse_integration(), none);
       return up ? shooting.coarse_free_residual(up->f, up->start) : std::nullopt;
     };
+    // The state at a root p, when the march down finds the same corner and the crack sits there.
+    auto state_at = [&](double p) -> std::optional<ScaledSolution> {
+      const auto up = side_from_corner(*l3, p, fine, none);
+      if (!up) return std::nullopt;
+      auto sol = shooting.assemble(Configuration::SlipWithPartTwo, up->f, p, true);
+      if (!sol.ok() || std::abs(sol.part_three_stretch - *l3) > 1e-7 * *l3 ||
+          std::abs(max_first_invariant_of(sol) - i1c) > 1e-7 * i1c)
+        return std::nullopt;
+      return sol;
+    };
+    const double hi = *l3 * (1.0 - 1e-9);
+    // A clamp residual within 1e-2 of the shooting's tolerance is the root (as in the shooting).
+    const double good_enough = 1e-2 * part_one_.settings().shooting_tol;
+    // Warm: a neighbour's root is close enough for the secant polish alone, which saves the
+    // coarse bracket and root (about half of this solve, docs/sweeps.md).
+    if (top_start && *top_start > s_.a && *top_start < hi)
+      if (const auto top = polish_coarse_root(
+              g, g_coarse, *top_start, *top_start - s_.a, s_.a, hi, good_enough, 1e-2, 4))
+        if (auto sol = state_at(*top)) return sol;
     // The top at the clamp may lie past locking (a long Part II): tops from l3 downward,
     // a + (l3 - a) / 2^k, until the residual is negative (as side_bracket_start does when its
     // floor fails).
-    const double hi = *l3 * (1.0 - 1e-9);
     double lo = hi;
     std::optional<double> g_lo;
     for (int k = 1; k <= 50 && !(g_lo && *g_lo < 0.0); ++k) {
@@ -504,8 +524,6 @@ class FlatPunchContact {
       g_lo = g_coarse(lo);
     }
     if (!g_lo || *g_lo >= 0.0) return std::nullopt;
-    // A clamp residual within 1e-2 of the shooting's tolerance is the root (as in the shooting).
-    const double good_enough = 1e-2 * part_one_.settings().shooting_tol;
     const int iterations = part_one_.settings().max_iterations;
     std::optional<double> top;
     if (const auto p_coarse =
@@ -514,14 +532,7 @@ class FlatPunchContact {
           g, g_coarse, *p_coarse, *p_coarse - s_.a, lo, hi, good_enough, 1e-2, 4);
     if (!top) top = shoot_increasing(g, lo, *g_lo, hi, iterations, 0.0, {good_enough, {}});
     if (!top) return std::nullopt;
-    const auto up = side_from_corner(*l3, *top, fine, none);
-    if (!up) return std::nullopt;
-    auto sol = shooting.assemble(Configuration::SlipWithPartTwo, up->f, *top, true);
-    // The march down must find the same corner, and the crack must sit there.
-    if (!sol.ok() || std::abs(sol.part_three_stretch - *l3) > 1e-7 * *l3 ||
-        std::abs(max_first_invariant_of(sol) - i1c) > 1e-7 * i1c)
-      return std::nullopt;
-    return sol;
+    return state_at(*top);
   }
 
   const Law& law() const { return law_; }

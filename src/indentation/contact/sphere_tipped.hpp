@@ -508,7 +508,8 @@ class SphereTippedContact {
   }
 
   template <class Shooting>
-  std::optional<ScaledSolution> direct_puncture(const Shooting&, double) const {
+  std::optional<ScaledSolution> direct_puncture(const Shooting&, double,
+                                                std::optional<double> = {}) const {
     return std::nullopt;
   }
 
