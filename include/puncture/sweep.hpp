@@ -9,6 +9,9 @@
 // seeds), never on the order in which points are solved.  Rows reach the sink in point order,
 // one at a time, whatever the number of threads, so a sweep's output is identical bit for bit
 // with 1 or N threads.  A point whose solve fails is a row with its Status, never dropped.
+// A grid's points are solved in warm chains along its lines (SweepSpec::warm_start), each chain
+// by one thread in order: a row depends on its chain alone, never on the threads, processes or
+// resumes.
 //
 // The library does not know the parameters' names: the caller turns each point into a Problem
 // (ProblemOfPoint); the CLI does it through its own flags, so every flag can be swept.
@@ -83,7 +86,30 @@ struct SweepSpec {
   std::size_t samples = 0;  // points of LatinHypercube, Sobol, MonteCarlo (a Grid has its own)
   std::uint64_t seed = 0;   // LatinHypercube, MonteCarlo: the per-point seeds derive from it
   SweepOutputs outputs;
+  // Grid: each point's puncture search starts from its neighbour's along a line of the last
+  // parameter (SolverOptions::puncture_top_stretch_start), in chains of kWarmChainPoints; the
+  // punctures then agree with cold solves to the shooting's tolerance, not bit for bit.  false:
+  // every point cold, its row equal to a single solve's to the last digit.  The sampled designs
+  // have no neighbours and are always cold.
+  bool warm_start = true;
 };
+
+// The warm chains: a grid line of the last parameter cut into runs of at most kWarmChainPoints
+// consecutive points (a line of L levels into ceil(L / kWarmChainPoints) runs), each solved in
+// order, every point's puncture search starting from the one before.
+inline constexpr std::size_t kWarmChainPoints = 16;
+
+// The points [begin, end) solved as one chain with point `index` of a valid spec: its warm
+// chain, or the point alone when the spec has none (warm_start off, a sampled design).
+struct PointRange {
+  std::size_t begin = 0, end = 0;
+};
+PointRange warm_chain_of(const SweepSpec& spec, std::size_t index);
+
+// Which share (SweepOptions::offset) of `stride` shares of a run from `first_point` solves point
+// `index` (>= first_point): the chains from first_point's on are dealt to the shares in turn.
+std::size_t share_of_point(const SweepSpec& spec, std::size_t first_point, std::size_t stride,
+                           std::size_t index);
 
 // Every problem with the spec, each naming the parameter (parameters[j].name or the field);
 // empty when valid.
@@ -116,6 +142,9 @@ struct SweepPuncture : Outcome {  // of predict_puncture
   double crack_reference_radius_mm = 0.0;  // where I1 peaks: reference radius ...
   double crack_radius_mm = 0.0;            // ... and current distance from the axis
   std::string crack_location;              // in words
+  // Where a neighbouring point's puncture search can start (PuncturePrediction's); empty when
+  // the puncture was not solved at the corner.
+  std::optional<double> part_two_top_stretch;
 };
 
 struct SweepForceAtDepth : Outcome {  // of solve_at_depth
@@ -132,6 +161,8 @@ struct SweepRow : Outcome {
 };
 
 // Evaluates one problem (the work of one point; also what a benchmark times).
+// With options.puncture_top_stretch_start (a warm start), a puncture that fails warm is solved
+// again cold.
 SweepRow evaluate_point(const Problem& problem, const SweepOutputs& outputs,
                         const SolverOptions& options = {});
 
@@ -144,15 +175,17 @@ struct SweepProgress {
 
 struct SweepOptions {
   int threads = 0;              // 0: every core (OpenMP's default); 1: serial
-  std::size_t first_point = 0;  // points before it are done already (resume); none solved
-  // This process solves the points first_point + offset + k stride (k = 0, 1, ...): one share
-  // of a sweep spread over processes (MPI rank `offset` of `stride`); rows in that order.
+  std::size_t first_point = 0;  // points before it are done already (resume); none delivered
+                                // (those of its warm chain are solved again, for the chain)
+  // This process solves the chains c0 + offset + k stride (k = 0, 1, ...), c0 the chain of
+  // first_point (warm_chain_of; a chain is one point without warm starts): one share of a
+  // sweep spread over processes (MPI rank `offset` of `stride`); rows in point order.
   std::size_t stride = 1;
   std::size_t offset = 0;
   // Rows solved ahead of the oldest undelivered one, per thread: bounds the memory held
   // whatever the number of points.
   std::size_t window_per_thread = 64;
-  SolverOptions solver{};  // record_fields is switched off
+  SolverOptions solver{};  // record_fields is switched off; the warm chains set the start
   // Receives every row in point order, one call at a time (from whichever thread drains the
   // window).  An exception thrown here stops the sweep and is rethrown by sweep().
   std::function<void(const SweepRow&)> on_row;

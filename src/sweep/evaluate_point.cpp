@@ -10,7 +10,13 @@ namespace puncture {
 namespace {
 
 SweepPuncture puncture_of(const Problem& problem, const SolverOptions& options) {
-  const PuncturePrediction p = predict_puncture(problem, options);
+  PuncturePrediction p = predict_puncture(problem, options);
+  if (!p.ok() && options.puncture_top_stretch_start) {
+    // Never a failed row that a cold search would solve.
+    SolverOptions cold = options;
+    cold.puncture_top_stretch_start.reset();
+    p = predict_puncture(problem, cold);
+  }
   SweepPuncture s;
   s.status = p.status;
   s.message = p.message;
@@ -22,6 +28,7 @@ SweepPuncture puncture_of(const Problem& problem, const SolverOptions& options) 
   s.crack_reference_radius_mm = p.crack_reference_radius_mm;
   s.crack_radius_mm = p.crack_radius_mm;
   s.crack_location = p.crack_location;
+  s.part_two_top_stretch = p.part_two_top_stretch;
   return s;
 }
 
@@ -72,6 +79,8 @@ SweepRow evaluate_point(const Problem& problem, const SweepOutputs& outputs,
     row.puncture = puncture_of(problem, quiet);
     first_failure(*row.puncture, "puncture");
   }
+  // The warm start is the puncture search's only.
+  quiet.puncture_top_stretch_start.reset();
   row.at_depth = forces_at(problem, outputs.force_at_depth_mm, quiet);
   for (const SweepForceAtDepth& f : row.at_depth)
     first_failure(f, fmt::format("force at depth {} mm", f.depth_mm));

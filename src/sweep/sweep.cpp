@@ -16,6 +16,7 @@
 
 #include "points.hpp"
 #include "puncture/sweep.hpp"
+#include "warm_chains.hpp"
 
 namespace puncture {
 
@@ -57,46 +58,41 @@ void on_threads(int threads, Body&& body) {
 #endif
 }
 
-// This run's points first + offset + k stride, k = 0 .. own - 1.
-struct Share {
-  std::size_t first = 0, offset = 0, stride = 1, own = 0;
-  std::size_t index(std::size_t k) const { return first + offset + k * stride; }
-};
-
-Share share_of(const SweepOptions& options, std::size_t count) {
-  const std::size_t start = options.first_point + options.offset;
-  const std::size_t own = start < count ? (count - start + options.stride - 1) / options.stride : 0;
-  return {options.first_point, options.offset, options.stride, own};
+detail::ShareChains share_of(const SweepSpec& spec, const SweepOptions& options) {
+  return detail::share_chains(spec, options.first_point, options.offset, options.stride);
 }
 
-// The lowest invalid point of the share (the same whatever the number of threads: every point
-// below the lowest failure found is checked).
+// The lowest invalid point the share delivers (the same whatever the number of threads: every
+// point below the lowest failure found is checked).
 std::optional<InvalidPoint> check_share(const SweepSpec& spec, const ProblemOfPoint& problem_of,
-                                        const Share& share, int threads) {
+                                        const detail::ShareChains& share, int threads) {
   std::mutex mutex;
-  std::size_t next = 0;
-  std::size_t worst = std::numeric_limits<std::size_t>::max();  // as k
+  std::size_t next = 0;                                         // chain m
+  std::size_t worst = std::numeric_limits<std::size_t>::max();  // as m
   std::optional<InvalidPoint> lowest;
-  constexpr std::size_t kChunk = 64;
+  // Claims of about 64 points.
+  const std::size_t batch = std::max<std::size_t>(1, 64 / share.layout.length);
   on_threads(threads, [&] {
     for (;;) {
       std::size_t begin;
       {
         const std::lock_guard lock(mutex);
-        if (next >= share.own || next > worst) return;
+        if (next >= share.count || next > worst) return;
         begin = next;
-        next = std::min(share.own, next + kChunk);
+        next = std::min(share.count, next + batch);
       }
-      for (std::size_t k = begin; k < std::min(share.own, begin + kChunk); ++k) {
-        try {
-          checked_problem(problem_of, detail::point_of_valid_spec(spec, share.index(k)));
-        } catch (...) {
-          const std::lock_guard lock(mutex);
-          if (k < worst) {
-            worst = k;
-            lowest = InvalidPoint{share.index(k), std::current_exception()};
+      for (std::size_t m = begin; m < std::min(share.count, begin + batch); ++m) {
+        for (std::size_t i = share.delivered_begin(m); i < share.solved(m).end; ++i) {
+          try {
+            checked_problem(problem_of, detail::point_of_valid_spec(spec, i));
+          } catch (...) {
+            const std::lock_guard lock(mutex);
+            if (m < worst) {
+              worst = m;
+              lowest = InvalidPoint{i, std::current_exception()};
+            }
+            return;
           }
-          break;
         }
       }
     }
@@ -125,41 +121,42 @@ void check_arguments(const SweepSpec& spec, const ProblemOfPoint& problem_of,
         fmt::format("first_point: {} is beyond the sweep's {} points", options.first_point, count));
 }
 
-// The solve pass's shared state: claims, the window of solved rows and the delivery.
+// The solve pass's shared state: claims of whole chains, the window of solved rows and the
+// delivery.  Rows are numbered k = 0 .. share.points - 1 in point order.
 class Window {
  public:
   Window(const SweepSpec& spec, const ProblemOfPoint& problem_of, const SweepOptions& options,
-         std::size_t count, int threads, SweepSummary& summary)
+         const detail::ShareChains& share, int threads, SweepSummary& summary)
       : spec_(spec),
         problem_of_(problem_of),
         options_(options),
-        count_(count),
-        slots_(std::max<std::size_t>(1, options.window_per_thread) * threads),
+        share_(share),
+        // A chain is claimed whole: the window holds the longest.
+        slots_(std::max(std::max<std::size_t>(1, options.window_per_thread) * threads,
+                        share.layout.length)),
         summary_(summary) {
     solver_ = options.solver;
     solver_.record_fields = false;
+    solver_.puncture_top_stretch_start.reset();
+    // The points before first_point in its chain are solved again for the chain's start only.
+    rebuild_.puncture = true;
   }
 
   void work() {
     for (;;) {
-      std::size_t index;
+      std::size_t m, k;
       {
         std::unique_lock lock(mutex_);
-        room_.wait(lock,
-                   [&] { return finished() || next_claim_ < next_delivery_ + slots_.size(); });
+        room_.wait(lock, [&] {
+          return finished() ||
+                 next_claim_k_ + share_.delivered(next_chain_) <= next_delivery_ + slots_.size();
+        });
         if (finished()) return;
-        index = point_index(next_claim_++);
+        m = next_chain_++;
+        k = next_claim_k_;
+        next_claim_k_ += share_.delivered(m);
       }
-      std::optional<SweepRow> row;
-      try {
-        const SweepPoint point = detail::point_of_valid_spec(spec_, index);
-        row = evaluate_point(checked_problem(problem_of_, point), spec_.outputs, solver_);
-        row->point = point;
-      } catch (...) {
-        fail(std::current_exception());
-        return;
-      }
-      deliver(std::move(*row));
+      if (!solve_chain(m, k)) return;
     }
   }
 
@@ -174,8 +171,40 @@ class Window {
 
  private:
   bool stopped() const { return options_.stop && options_.stop->load(); }
-  // No more claims: every point claimed, an error, or a stop request.
-  bool finished() const { return next_claim_ >= count_ || error_ || stopped(); }
+  // No more claims: every chain claimed, an error, or a stop request.
+  bool finished() const { return next_chain_ >= share_.count || error_ || stopped(); }
+
+  // Chain m in order, its rows from number k on; each point's puncture search starts from the
+  // last one found before it in the chain.  false after an error or a stop request.
+  bool solve_chain(std::size_t m, std::size_t k) {
+    SolverOptions solver = solver_;
+    const PointRange points = share_.solved(m);
+    const std::size_t delivered_from = share_.delivered_begin(m);
+    for (std::size_t index = points.begin; index < points.end; ++index) {
+      if (index > points.begin && stopped()) {
+        // Threads waiting for room would not see the stop otherwise.
+        { const std::lock_guard lock(mutex_); }
+        room_.notify_all();
+        return false;
+      }
+      std::optional<SweepRow> row;
+      try {
+        const SweepPoint point = detail::point_of_valid_spec(spec_, index);
+        const bool delivered = index >= delivered_from;
+        row = evaluate_point(
+            checked_problem(problem_of_, point), delivered ? spec_.outputs : rebuild_, solver);
+        row->point = point;
+        if (row->puncture && row->puncture->part_two_top_stretch)
+          solver.puncture_top_stretch_start = row->puncture->part_two_top_stretch;
+        if (!delivered) continue;
+      } catch (...) {
+        fail(std::current_exception());
+        return false;
+      }
+      deliver(std::move(*row), k++);
+    }
+    return true;
+  }
 
   void fail(std::exception_ptr e) {
     const std::lock_guard lock(mutex_);
@@ -183,9 +212,9 @@ class Window {
     room_.notify_all();
   }
 
-  void deliver(SweepRow row) {
+  void deliver(SweepRow row, std::size_t k) {
     const std::lock_guard lock(mutex_);
-    slots_[local_of(row.point.index) % slots_.size()] = std::move(row);
+    slots_[k % slots_.size()] = std::move(row);
     try {
       // After an error nothing more is delivered: the rows delivered stay a prefix.
       for (auto* slot = &slots_[next_delivery_ % slots_.size()]; slot->has_value() && !error_;
@@ -227,7 +256,7 @@ class Window {
     if (!options_.progress) return;
     SweepProgress p;
     p.done = summary_.delivered;
-    p.to_do = count_;
+    p.to_do = share_.points;
     p.failed = summary_.delivered - summary_.converged;
     p.elapsed_s = seconds_since(start_);
     options_.progress(p);
@@ -236,17 +265,12 @@ class Window {
   const SweepSpec& spec_;
   const ProblemOfPoint& problem_of_;
   const SweepOptions& options_;
-  SolverOptions solver_;
-  // This process's points, k = 0 .. count_ - 1: first_point + offset + k stride.
-  std::size_t point_index(std::size_t k) const {
-    return options_.first_point + options_.offset + k * options_.stride;
-  }
-  std::size_t local_of(std::size_t index) const {
-    return (index - options_.first_point - options_.offset) / options_.stride;
-  }
-  const std::size_t count_;
-  std::vector<std::optional<SweepRow>> slots_;  // point k in slot k % size, until delivered
-  std::size_t next_claim_ = 0;                  // k of the next point to solve
+  const detail::ShareChains& share_;
+  SolverOptions solver_;                        // cold
+  SweepOutputs rebuild_;                        // the puncture alone
+  std::vector<std::optional<SweepRow>> slots_;  // row k in slot k % size, until delivered
+  std::size_t next_chain_ = 0;                  // m of the next chain to solve
+  std::size_t next_claim_k_ = 0;                // k of its first row
   std::size_t next_delivery_ = 0;               // k of the next row to deliver
   SweepSummary& summary_;
   std::exception_ptr error_;
@@ -262,15 +286,14 @@ std::optional<InvalidPoint> first_invalid_point(const SweepSpec& spec,
                                                 const ProblemOfPoint& problem_of,
                                                 const SweepOptions& options) {
   check_arguments(spec, problem_of, options);
-  return check_share(
-      spec, problem_of, share_of(options, point_count(spec)), thread_count(options.threads));
+  return check_share(spec, problem_of, share_of(spec, options), thread_count(options.threads));
 }
 
 SweepSummary sweep(const SweepSpec& spec, const ProblemOfPoint& problem_of,
                    const SweepOptions& options) {
   check_arguments(spec, problem_of, options);
   const std::size_t count = point_count(spec);
-  const Share share = share_of(options, count);
+  const detail::ShareChains share = share_of(spec, options);
   SweepSummary summary;
   summary.total_points = count;
   summary.first_point = options.first_point;
@@ -283,8 +306,8 @@ SweepSummary sweep(const SweepSpec& spec, const ProblemOfPoint& problem_of,
     summary.validation_s = seconds_since(validation_start);
   }
 
-  const std::size_t own = share.own;
-  Window window(spec, problem_of, options, own, summary.threads, summary);
+  const std::size_t own = share.points;
+  Window window(spec, problem_of, options, share, summary.threads, summary);
   on_threads(summary.threads, [&] { window.work(); });
   window.rethrow_failure();
   window.report_progress();  // the last word: every row delivered

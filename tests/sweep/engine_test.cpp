@@ -253,10 +253,12 @@ TEST(SweepEngine, AnInvalidPointIsRefusedBeforeAnySolve) {
 // A share checks its own points only (points 3 and 4 are invalid): the stride-2 share from
 // offset 1 meets point 3, the one from offset 0 point 4, the lowest over the shares is the
 // whole sweep's.  Each problem is built once per check and once per solve; none is built
-// twice when the caller checked already.
+// twice when the caller checked already.  Point by point (without warm chains: with them the
+// line is one chain, warm_chains_test.cpp).
 TEST(SweepEngine, EachShareChecksItsOwnPoints) {
   SweepSpec spec;
   spec.parameters = {{"thickness", {"0.2", "0.1", "0.3", "-0.1", "0", "0.2"}, {}}};
+  spec.warm_start = false;
   std::atomic<int> built{0};
   const auto problem_of = [&built](const SweepPoint& p) {
     ++built;

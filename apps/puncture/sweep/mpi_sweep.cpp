@@ -110,13 +110,15 @@ EndCounts counts_of(const SweepSummary& s) {
 }
 
 // Rank 0's writer: its own rows and the other ranks' in point order; point g belongs to rank
-// (g - first) mod P, and each rank's rows arrive in its own order (MPI keeps the order of one
-// sender's messages).
+// share_of_point(spec, first, P, g) (its warm chain's, dealt in turn), and each rank's rows
+// arrive in its own order (MPI keeps the order of one sender's messages).
 class OrderedWriter {
  public:
-  OrderedWriter(ResumableCsv& csv, int ranks, std::size_t first, std::size_t total,
-                std::function<void(const SweepProgress&)> progress, double progress_every_s)
+  OrderedWriter(ResumableCsv& csv, const SweepSpec& spec, int ranks, std::size_t first,
+                std::size_t total, std::function<void(const SweepProgress&)> progress,
+                double progress_every_s)
       : csv_(csv),
+        spec_(spec),
         ranks_(static_cast<std::size_t>(ranks)),
         first_(first),
         total_(total),
@@ -136,7 +138,7 @@ class OrderedWriter {
       receive(kMaxQueued);
       const std::size_t g = first_ + written_;
       if (g >= total_) return;
-      const std::size_t owner = (g - first_) % ranks_;
+      const std::size_t owner = share_of_point(spec_, first_, ranks_, g);
       auto& rows = owner == 0 ? own_ : queued_[owner];
       if (!rows.empty()) {
         write(rows.front().first, rows.front().second);
@@ -217,6 +219,7 @@ class OrderedWriter {
 
   using Clock = std::chrono::steady_clock;
   ResumableCsv& csv_;
+  const SweepSpec& spec_;
   std::size_t ranks_, first_, total_;
   std::vector<bool> ended_;
   // Rows solved, not yet written: rank 0's own, and those received from rank q (queued_[q]).
@@ -230,7 +233,8 @@ class OrderedWriter {
   Clock::time_point start_ = Clock::now(), last_ = Clock::now();
 };
 
-// This rank's points from `first` on: first + rank, first + rank + P, ...
+// This rank's warm chains from `first`'s on: rank, rank + P, ... (each point its own chain
+// without warm starts).
 SweepOptions share_options(const MpiSession& mpi, const SweepFlags& f, std::size_t first) {
   SweepOptions options;
   options.threads = mpi.threads_may_send() ? f.threads : 1;
@@ -262,7 +266,8 @@ void check_points_together(const MpiSession& mpi, const SweepSpec& spec,
   std::uint64_t lowest = kNone;
   MPI_Allreduce(&mine, &lowest, 1, MPI_UINT64_T, MPI_MIN, MPI_COMM_WORLD);
   if (lowest == kNone) return;
-  const int owner = static_cast<int>((lowest - options.first_point) % options.stride);
+  const int owner =
+      static_cast<int>(share_of_point(spec, options.first_point, options.stride, lowest));
   std::string why;
   if (owner == mpi.rank()) why = what_of(invalid->error);
   if (owner != 0 && owner == mpi.rank())
@@ -347,6 +352,7 @@ int run_rank(const MpiSession& mpi, const CLI::App& app, const SweepFlags& f,
 
   const bool terminal = isatty(STDERR_FILENO) == 1;
   OrderedWriter writer(*csv,
+                       file.spec,
                        mpi.size(),
                        first,
                        total,
