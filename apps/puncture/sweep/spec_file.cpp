@@ -237,6 +237,14 @@ SweepFile read_sweep_file(const std::string& path) {
     } else if (key == "puncture") {
       if (!value->is_boolean()) r.fail(*value, "'puncture' must be true or false");
       spec.outputs.puncture = value->as_boolean();
+    } else if (key == "warm-start") {
+      if (!value->is_boolean()) r.fail(*value, "'warm-start' must be true or false");
+      if (value->as_boolean() && spec.design != SweepDesign::Grid)
+        r.fail(*value,
+               fmt::format("'warm-start': a {} has no neighbouring points to start from (only a "
+                           "grid does); its points are always solved cold",
+                           to_token(spec.design)));
+      spec.warm_start = value->as_boolean();
     } else if (key == "force-at-depth") {
       spec.outputs.force_at_depth_mm = r.numbers(*value, key);
       for (const double depth : spec.outputs.force_at_depth_mm)
@@ -254,7 +262,7 @@ SweepFile read_sweep_file(const std::string& path) {
     } else {
       r.fail(*value,
              fmt::format("unknown key '{}' (the spec's keys: design, samples, seed, puncture, "
-                         "force-at-depth, [problem], [parameters])",
+                         "force-at-depth, warm-start, [problem], [parameters])",
                          key));
     }
   }
