@@ -7,9 +7,15 @@
 //   BM_SweepShare/P    the share of one of P processes (SweepOptions stride P, offset 0; as
 //                       rank 0 of mpirun -n P) on 1 thread: it checks and solves its own
 //                       points only, so its points per second per core equal the serial run's
+//   BM_GridLineWarm/L  a 32-point grid line (L: 0 friction 0.1 to 0.3, 1 critical I1 85 to
+//                       105, 2 shear modulus, 3 thickness) of puncture points on 1 thread, cold
+//                       and warm (two chains of 16) alternately in each iteration;
+//                       warm_over_cold: the ratio of their CPU times (this thread's: the
+//                       machine's load does not enter) in the same run
 // Per-point cost / one solve: sweep overhead (point list, validation pass, ordered delivery)
 // and the points' own spread; T threads / 1 thread: the parallel efficiency.
 #include <benchmark/benchmark.h>
+#include <time.h>
 
 #include "puncture/loading_curve.hpp"
 #include "puncture/sweep.hpp"
@@ -73,6 +79,58 @@ void BM_SweepShare(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(rows));
 }
 BENCHMARK(BM_SweepShare)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// One parameter of the paper's membrane over 32 levels, the others at the paper's values.
+struct GridLine {
+  const char* name;
+  double lower, upper;
+  void (*set)(Problem&, double);
+};
+const GridLine kLines[] = {
+    {"friction", 0.1, 0.3, [](Problem& p, double x) { p.friction = x; }},
+    {"critical-i1", 85.0, 105.0, [](Problem& p, double x) { p.critical_i1 = x; }},
+    {"shear-modulus", 0.054, 0.066, [](Problem& p, double x) { p.material.shear_modulus_mpa = x; }},
+    {"thickness", 0.18, 0.22, [](Problem& p, double x) { p.geometry.thickness_mm = x; }},
+};
+
+void BM_GridLineWarm(benchmark::State& state) {
+  const GridLine& line = kLines[state.range(0)];
+  SweepSpec warm;
+  warm.parameters = {{line.name, evenly_spaced_levels(line.lower, line.upper, 32), {}}};
+  SweepSpec cold = warm;
+  cold.warm_start = false;
+  const ProblemOfPoint problem_of = [&line](const SweepPoint& point) {
+    Problem problem;
+    line.set(problem, point.values[0]);
+    return problem;
+  };
+  SweepOptions options;
+  options.threads = 1;
+  std::size_t failed = 0;
+  options.on_row = [&failed](const SweepRow& row) { failed += !row.ok(); };
+  // On one thread the sweep runs on this one (OpenMP's master): its CPU time is the sweep's.
+  const auto cpu_s = [] {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+  };
+  double cold_s = 0.0, warm_s = 0.0;
+  for (auto _ : state) {
+    const double t0 = cpu_s();
+    benchmark::DoNotOptimize(sweep(cold, problem_of, options));
+    const double t1 = cpu_s();
+    benchmark::DoNotOptimize(sweep(warm, problem_of, options));
+    cold_s += t1 - t0;
+    warm_s += cpu_s() - t1;
+  }
+  const double points = 32.0 * static_cast<double>(state.iterations());
+  state.counters["cold_ms_per_point"] = 1e3 * cold_s / points;
+  state.counters["warm_ms_per_point"] = 1e3 * warm_s / points;
+  state.counters["warm_over_cold"] = warm_s / cold_s;
+  state.counters["failed"] = static_cast<double>(failed);
+  state.SetLabel(line.name);
+}
+BENCHMARK(BM_GridLineWarm)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
