@@ -585,6 +585,11 @@ void bind_problem(py::module_& m) {
                      &SolverOptions::energy_to_puncture,
                      "fill PuncturePrediction.energy_to_puncture_mj (costs about a third of a "
                      "200-point curve)")
+      .def_readwrite("puncture_top_stretch_start",
+                     &SolverOptions::puncture_top_stretch_start,
+                     "a warm start: a neighbouring problem's PuncturePrediction."
+                     "part_two_top_stretch, or None (cold); the puncture then agrees with the "
+                     "cold one to the shooting's tolerance, not bit for bit")
       .def("__repr__", [](const SolverOptions& s) {
         return fmt::format(
             "SolverOptions(integration_rel_tol={:g}, integration_abs_tol={:g}, shooting_tol={:g}, "

@@ -225,6 +225,11 @@ void bind_results(py::module_& m) {
                     &PuncturePrediction::energy_to_puncture_mj,
                     "area under the force-depth curve to puncture [mJ = N mm], or None (asked "
                     "by SolverOptions.energy_to_puncture)")
+      .def_readonly("part_two_top_stretch",
+                    &PuncturePrediction::part_two_top_stretch,
+                    "the hoop stretch at the top of Part II when the puncture was solved at the "
+                    "corner (else None): a neighbouring problem's "
+                    "SolverOptions.puncture_top_stretch_start")
       .def_property_readonly(
           "state",
           [](py::object self) { return member_with_problem(self, &PuncturePrediction::state); },

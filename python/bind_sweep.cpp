@@ -78,6 +78,7 @@ void bind_sweep(py::module_& m) {
          std::uint64_t seed,
          bool puncture,
          const std::vector<double>& force_at_depth_mm,
+         bool warm_start,
          int threads,
          std::size_t offset,
          std::size_t stride,
@@ -112,6 +113,7 @@ void bind_sweep(py::module_& m) {
         spec.seed = seed;
         spec.outputs.puncture = puncture;
         spec.outputs.force_at_depth_mm = force_at_depth_mm;
+        spec.warm_start = warm_start;
         // The solves run without the GIL; each problem is built by the Python callable with it.
         const ProblemOfPoint of_point = [&](const SweepPoint& point) {
           py::gil_scoped_acquire gil;
@@ -151,6 +153,7 @@ void bind_sweep(py::module_& m) {
       py::arg("seed"),
       py::arg("puncture"),
       py::arg("force_at_depth_mm"),
+      py::arg("warm_start"),
       py::arg("threads"),
       py::arg("offset"),
       py::arg("stride"),

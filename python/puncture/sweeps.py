@@ -10,8 +10,9 @@
     table["puncture_force_n"]        # numpy arrays (a pandas DataFrame when pandas is there)
 
 The spec has the keys of the CLI's SPEC.toml (docs/sweeps.md): design, samples, seed, puncture,
-force-at-depth (depths in mm) and parameters, each {range}, {range, levels}, {values} or
-{distribution, mean, sd[, range]}.  The names are yours: `problem_of(values)` receives a dict
+force-at-depth (depths in mm), warm-start (a grid: each puncture search starts from its
+neighbour's along the last parameter, in chains of 16 points; default True) and parameters, each
+{range}, {range, levels}, {values} or {distribution, mean, sd[, range]}.  The names are yours: `problem_of(values)` receives a dict
 name -> number (or word) per point and returns its Problem; it runs with the GIL held, the
 solves without it.  Rows come in point order, identical whatever `threads`; a failed point is a
 row with its status, failure_kind and message, its outputs NaN.  Invalid input raises ValueError.
@@ -50,11 +51,13 @@ def sweep(spec, problem_of, threads=0, share=(0, 1), dataframe=None):
     """Solves every point of `spec` (see the module's doc); returns its columns as numpy arrays
     (a dict), or a pandas DataFrame when pandas is installed and `dataframe` is not False.
 
-    share=(k, n): only the points k, k + n, k + 2n, ... (one of n workers, e.g. on a Dask
-    cluster: examples/dask_sweep.py); the n shares' rows together are the whole sweep's.  A
-    share checks its own points' problems only: an invalid point raises in the share holding
-    it."""
-    known = {"design", "samples", "seed", "puncture", "force-at-depth", "parameters"}
+    share=(k, n): only the warm chains k, k + n, k + 2n, ... (one point each without warm
+    starts: the points k, k + n, ...; one of n workers, e.g. on a Dask cluster:
+    examples/dask_sweep.py); the n shares' rows together are the whole sweep's, each row the
+    same whatever n.  A share checks its own points' problems only: an invalid point raises in
+    the share holding it."""
+    known = {"design", "samples", "seed", "puncture", "force-at-depth", "warm-start",
+             "parameters"}
     unknown = set(spec) - known
     if unknown:
         raise ValueError(f"spec: unknown key(s) {sorted(unknown)} (keys: {sorted(known)})")
@@ -63,6 +66,12 @@ def sweep(spec, problem_of, threads=0, share=(0, 1), dataframe=None):
         raise ValueError("spec: 'design' is missing (grid, latin-hypercube, sobol or monte-carlo)")
     parameters = spec.get("parameters") or {}
     grid = design == "grid"
+    warm = spec.get("warm-start", grid)
+    if not isinstance(warm, bool):
+        raise ValueError(f"warm-start: must be True or False, got {warm!r}")
+    if warm and not grid:
+        raise ValueError(f"warm-start: a {design} has no neighbouring points to start from (only "
+                         "a grid does); its points are always solved cold")
     names, levels, distributions = [], [], []
     for name, p in parameters.items():
         names.append(name)
@@ -70,7 +79,7 @@ def sweep(spec, problem_of, threads=0, share=(0, 1), dataframe=None):
         distributions.append(("uniform", 0.0, 1.0, 0.0, 0.0) if grid else _distribution(name, p))
     columns = _sweep(design, names, levels, distributions, int(spec.get("samples", 0)),
                      int(spec.get("seed", 0)), bool(spec.get("puncture", True)),
-                     [float(d) for d in spec.get("force-at-depth", [])], int(threads),
+                     [float(d) for d in spec.get("force-at-depth", [])], warm, int(threads),
                      int(share[0]), int(share[1]), problem_of)
     if dataframe is not False:
         try:

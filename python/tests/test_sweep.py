@@ -87,6 +87,64 @@ def test_shares_together_are_the_whole_sweep():
     assert np.array_equal(force, whole["puncture_force_n"])
 
 
+WARM_GRID = {"design": "grid",
+             "parameters": {"critical_i1": {"values": [80, 95.2]},
+                            "friction": {"range": [0.05, 0.4], "levels": 20}}}
+
+
+def paper_membrane(v):
+    return pu.Problem(friction=v["friction"], critical_i1=v["critical_i1"])
+
+
+def test_warm_rows_equal_cold_rows_to_the_shooting_tolerance():
+    """A grid's friction lines in warm chains (16 + 4 points): force and depth within 1e-12 of
+    the cold rows (which are predict_puncture's to the bit), I1 and stretch within 1e-10."""
+    warm = pu.sweep(WARM_GRID, paper_membrane, dataframe=False)
+    cold = pu.sweep(dict(WARM_GRID, **{"warm-start": False}), paper_membrane, dataframe=False)
+    assert list(warm["status"]) == list(cold["status"]) == ["converged"] * 40
+    for key in ("puncture_force_n", "puncture_depth_mm"):
+        np.testing.assert_allclose(warm[key], cold[key], rtol=1e-12, atol=0)
+    # I1 and the corner stretch come from the state marched down Part II from the root.
+    for key in ("max_i1", "part_three_stretch"):
+        np.testing.assert_allclose(warm[key], cold[key], rtol=1e-10, atol=0)
+    assert list(warm["crack_location"]) == list(cold["crack_location"])
+    for i in (0, 17, 39):
+        p = pu.predict_puncture(paper_membrane({"friction": cold["friction"][i],
+                                                "critical_i1": cold["critical_i1"][i]}))
+        assert cold["puncture_force_n"][i] == p.force_n
+
+
+def test_a_warm_start_from_python():
+    """SolverOptions.puncture_top_stretch_start from a neighbour's part_two_top_stretch."""
+    cold = pu.predict_puncture(paper_membrane({"friction": 0.2, "critical_i1": 95.2}))
+    near = pu.predict_puncture(paper_membrane({"friction": 0.19, "critical_i1": 95.2}))
+    options = pu.SolverOptions()
+    options.puncture_top_stretch_start = near.part_two_top_stretch
+    warm = pu.predict_puncture(paper_membrane({"friction": 0.2, "critical_i1": 95.2}), options)
+    assert warm.force_n == pytest.approx(cold.force_n, rel=1e-12, abs=0)
+    assert warm.depth_mm == pytest.approx(cold.depth_mm, rel=1e-12, abs=0)
+
+
+def test_warm_shares_together_are_the_whole_sweep_bit_for_bit():
+    """Shares take whole chains: every row the same as the single run's, whatever n."""
+    whole = pu.sweep(WARM_GRID, paper_membrane, threads=1, dataframe=False)
+    for n in (2, 3):
+        parts = [pu.sweep(WARM_GRID, paper_membrane, share=(k, n), dataframe=False)
+                 for k in range(n)]
+        points = np.concatenate([p["point"] for p in parts])
+        order = np.argsort(points)
+        assert list(points[order]) == list(range(40))
+        force = np.concatenate([p["puncture_force_n"] for p in parts])[order]
+        assert np.array_equal(force, whole["puncture_force_n"])
+
+
+def test_warm_start_on_a_sampled_design_is_refused():
+    with pytest.raises(ValueError, match="warm-start: a latin-hypercube has no neighbouring"):
+        pu.sweep(dict(SPEC, **{"warm-start": True}), small_probe)
+    with pytest.raises(ValueError, match="warm-start: must be True or False"):
+        pu.sweep(dict(WARM_GRID, **{"warm-start": "yes"}), paper_membrane)
+
+
 def test_dask_example_gives_the_single_machine_table():
     """python/examples/dask_sweep.py on a local Dask cluster (skipped without python3-dask and
     python3-distributed): the same table as one puncture.sweep."""
