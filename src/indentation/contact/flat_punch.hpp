@@ -509,7 +509,7 @@ class FlatPunchContact {
     // A clamp residual within 1e-2 of the shooting's tolerance is the root (as in the shooting).
     const double good_enough = 1e-2 * part_one_.settings().shooting_tol;
     // Warm: a neighbour's root is close enough for the secant polish alone, which saves the
-    // coarse bracket and root (about half of this solve, docs/sweeps.md).
+    // coarse bracket and root (31 % of this solve's instructions, docs/sweeps.md).
     if (top_start && *top_start > s_.a && *top_start < hi)
       if (const auto top = polish_coarse_root(
               g, g_coarse, *top_start, *top_start - s_.a, s_.a, hi, good_enough, 1e-2, 4))
