@@ -313,6 +313,7 @@ TEST(CurveFit, StickThresholdFromTheProfileHoldsTheTruth) {
       fit.parameters[0].value,
       fit.parameters[0].standard_error.value_or(-1.0),
       fit.curve_evaluations);
+  std::printf("%s\n", tau.note.c_str());
   EXPECT_TRUE(covers(tau, 0.3)) << tau.note;
   EXPECT_LT(*tau.ci_upper - *tau.ci_lower, 0.1 * 0.3);
   EXPECT_TRUE(covers(fit.parameters[0], 0.06)) << fit.parameters[0].value;
@@ -345,6 +346,11 @@ TEST(CurveFit, DepthThresholdIsBracketedByTheMeasuredDepths) {
   ASSERT_TRUE(fit.ok()) << fit.message;
   const auto& tau = fit.parameters[1];
   ASSERT_TRUE(tau.ci_lower && tau.ci_upper);
+  std::printf("depth threshold %.6g mm in [%.6g, %.6g] mm; %d curves\n",
+              tau.value,
+              *tau.ci_lower,
+              *tau.ci_upper,
+              fit.curve_evaluations);
   const auto next = std::upper_bound(test.depth_mm.begin(), test.depth_mm.end(), 10.0);
   ASSERT_NE(next, test.depth_mm.end());
   EXPECT_EQ(*tau.ci_upper, *next);
