@@ -178,26 +178,37 @@ CurveFit fit_with_stick_threshold_profile(const CurveFitProblem& problem,
     fail.curve_evaluations = curves;
     return fail;
   }
-  // Brent assumes one minimum: walk to the neighbours while they are lower.
-  while (best > 0 && brent_cost(best - 1) < brent_cost(best)) --best;
-  while (best < m && brent_cost(best + 1) < brent_cost(best)) ++best;
-
   // The profile in residual variances of the best place, the threshold counted a parameter.
-  const Place& top = places.at(best);
   int curve_p = 1;
   for (const auto f : inner.free) curve_p += f != CurveParameter::CriticalI1;
-  const int dof = top.fit.points - curve_p;
-  const double s2 = dof > 0 ? top.ssr / dof : kInf;
   const double quantile =
       boost::math::quantile(boost::math::chi_squared_distribution<double>(1.0), 0.95);
-  const auto rise = [&](int k) {
-    const Place& pl = at(k);
-    if (!pl.usable() || !(s2 > 0.0) || !std::isfinite(s2)) return kInf;
-    return (pl.ssr - top.ssr) / s2 + pl.puncture_chi2 - top.puncture_chi2;
-  };
   int k_lo = best, k_hi = best;
-  while (k_lo > 0 && rise(k_lo - 1) <= quantile) --k_lo;
-  while (k_hi < m && rise(k_hi + 1) <= quantile) ++k_hi;
+  for (int restarts = 0; restarts <= m; ++restarts) {
+    // Brent assumes one minimum: walk to the neighbours while they are lower.
+    while (best > 0 && brent_cost(best - 1) < brent_cost(best)) --best;
+    while (best < m && brent_cost(best + 1) < brent_cost(best)) ++best;
+    const Place& top = places.at(best);
+    const int dof = top.fit.points - curve_p;
+    const double s2 = dof > 0 ? top.ssr / dof : kInf;
+    const auto rise = [&](int k) {
+      const Place& pl = at(k);
+      if (!pl.usable() || !(s2 > 0.0) || !std::isfinite(s2)) return kInf;
+      return (pl.ssr - top.ssr) / s2 + pl.puncture_chi2 - top.puncture_chi2;
+    };
+    k_lo = k_hi = best;
+    while (k_lo > 0 && rise(k_lo - 1) <= quantile) --k_lo;
+    while (k_hi < m && rise(k_hi + 1) <= quantile) ++k_hi;
+    // A place inside the interval below the best (a second minimum behind a rise smaller than
+    // the quantile): start again from it.
+    int lowest = best;
+    for (int k = k_lo; k <= k_hi; ++k)
+      if (brent_cost(k) < brent_cost(lowest)) lowest = k;
+    if (lowest == best) break;
+    best = lowest;
+  }
+  const Place& top = places.at(best);
+  const int dof = top.fit.points - curve_p;
 
   CurveFit fit = top.fit;
   Problem fitted = fit.fitted_problems.front();
