@@ -84,7 +84,7 @@ struct ParameterBounds {
 enum class RobustLoss { None, Huber, Cauchy };
 
 struct CurveFitOptions {
-  std::vector<CurveParameter> free;     // the fitted parameters, shared by every test
+  std::vector<CurveParameter> free;     // the fitted parameters (contact-offset: one per test)
   std::vector<ParameterBounds> bounds;  // overrides of the default bounds (default_bounds)
   RobustLoss loss = RobustLoss::None;   // on the curve residuals (ceres::HuberLoss, CauchyLoss)
   double loss_scale_n = 0.0;            // the loss's scale [N]; needed with a robust loss
@@ -173,12 +173,11 @@ struct CurveFit : Outcome {
 // thresholds over which the cost rises by at most chi2(0.95, 1) = 3.84 residual variances, widened
 // by 1.96 standard errors of the threshold at its ends from the other parameters' covariance.
 // Throws InvalidInput: no test or no free parameter, a parameter twice, stick-threshold free
-// with several tests, alone or with contact-offset,
-// a parameter the problems do not have (J_lim without Gent), the critical I1 free without a
-// puncture point, a test with fewer points than free parameters + 1, mismatched lengths, a
-// depth that is not finite and > 0 or decreases, a force that is not finite, bounds that are
-// not finite with lower < upper, an invalid problem or options.  The start is clamped into the
-// bounds.
+// with several tests, alone or with contact-offset, a parameter the problems do not have (J_lim
+// without Gent), the critical I1 free without a puncture point, a test with fewer points than free
+// parameters + 1, mismatched lengths, a depth that is not finite and > 0 or decreases, a force that
+// is not finite, bounds that are not finite with lower < upper, an invalid problem or options.  The
+// start is clamped into the bounds.
 CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& options);
 
 std::string to_string(RobustLoss loss);

@@ -13,8 +13,7 @@ namespace puncture::detail {
 // of the test's rule that switches there, and smooth in the other parameters); the places are
 // searched on a grid, then by Brent's method between the best grid place's neighbours; the
 // interval is the places around the best whose cost rises by at most chi2(0.95, 1) residual
-// variances.  The places map back to thresholds of the test's
-// rule at the fitted parameters.
+// variances.  The places map back to thresholds of the test's rule at the fitted parameters.
 CurveFit fit_with_stick_threshold_profile(const CurveFitProblem& problem,
                                           const CurveFitOptions& options);
 
