@@ -332,6 +332,38 @@ TEST(CurveFit, StickThresholdFromTheProfileHoldsTheTruth) {
   EXPECT_NEAR(at.stick_slip.depth_mm, 16.778, 0.5);
 }
 
+// The same record read with an edge-tension rule: the same place of the switch, so the fitted
+// edge tension switches the model between the same two measured depths, and the held force
+// there is the force rule's estimate (both are the middle of the place at the same G).
+TEST(CurveFit, EdgeTensionThresholdSwitchesAtTheSamePlace) {
+  Problem truth = paper();
+  truth.stick = {StickRule::Force, 0.3};
+  auto test = synthetic(truth, 120, 0.002, 41);
+  CurveFitOptions o;
+  o.free = {CurveParameter::ShearModulus, CurveParameter::StickThreshold};
+  const auto by_force = fit_curves({{test}}, o);
+  ASSERT_TRUE(by_force.ok()) << by_force.message;
+  test.problem.stick = {StickRule::EdgeTension, 0.02};
+  const auto by_tension = fit_curves({{test}}, o);
+  ASSERT_TRUE(by_tension.ok()) << by_tension.message;
+  EXPECT_EQ(by_tension.parameters[1].unit, "N/mm");
+  EXPECT_EQ(by_tension.parameters[1].note, by_force.parameters[1].note);  // the same depths
+  const auto at = [](const Problem& p, double threshold) {
+    Problem q = p;
+    q.stick.threshold = threshold;
+    return stick_slip_boundary(q);
+  };
+  const auto& fitted = by_tension.fitted_problems[0];
+  const auto mid = at(fitted, by_tension.parameters[1].value);
+  ASSERT_TRUE(mid.ok() && mid.switches) << mid.message;
+  EXPECT_GT(mid.depth_mm, 16.563);
+  EXPECT_LE(mid.depth_mm, 16.8641);
+  EXPECT_NEAR(mid.force_stuck_n, by_force.parameters[1].value, 1e-3 * 0.3);
+  // The interval's ends switch at (or, widened by G's uncertainty, just beyond) those depths.
+  EXPECT_LT(at(fitted, *by_tension.parameters[1].ci_lower).depth_mm, 16.563 + 1e-6);
+  EXPECT_GT(at(fitted, *by_tension.parameters[1].ci_upper).depth_mm, 16.8641 - 1e-6);
+}
+
 // A depth threshold: the interval is exactly the measured depths around the switch (nothing
 // else moves it), and J_lim is re-fitted at each place too.
 TEST(CurveFit, DepthThresholdIsBracketedByTheMeasuredDepths) {
