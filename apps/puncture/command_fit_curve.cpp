@@ -281,7 +281,7 @@ void add_fit_curve_command(CLI::App& fit, FitCurveFlags& f) {
                    f.free,
                    "Parameters to fit, comma-separated: shear-modulus [MPa], jlim,\n"
                    "friction, critical-i1 (needs a puncture point), stick-threshold\n"
-                   "(the --stick rule's, in its unit; one test, with another parameter;\n"
+                   "(the --stick rule's, in its unit; one test, alone or with others;\n"
                    "by a profile over where the switch falls, its interval where the\n"
                    "cost rises by chi2(0.95, 1)), contact-offset [mm] (each test's own:\n"
                    "the model's depth is the record's minus it; removes the bias of a\n"

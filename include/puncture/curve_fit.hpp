@@ -166,14 +166,14 @@ struct CurveFit : Outcome {
   std::vector<Problem> fitted_problems;  // each test's problem at the estimates
 };
 
-// The stick threshold (one test, with another free parameter, not with contact-offset): for each
+// The stick threshold (one test, not with contact-offset; alone, a place is the curve): for each
 // place of the switch between two measured depths the others are fitted with the switch there
 // (a grid, then a Brent search over the place, the cost a step function of it); the estimate is the
 // middle of the thresholds that put the switch between the best two depths, its interval the
 // thresholds over which the cost rises by at most chi2(0.95, 1) = 3.84 residual variances, widened
 // by 1.96 standard errors of the threshold at its ends from the other parameters' covariance.
 // Throws InvalidInput: no test or no free parameter, a parameter twice, stick-threshold free
-// with several tests, alone or with contact-offset, a parameter the problems do not have (J_lim
+// with several tests or with contact-offset, a parameter the problems do not have (J_lim
 // without Gent), the critical I1 free without a puncture point, a test with fewer points than free
 // parameters + 1, mismatched lengths, a depth that is not finite and > 0 or decreases, a force that
 // is not finite, bounds that are not finite with lower < upper, an invalid problem or options.  The

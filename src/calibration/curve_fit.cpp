@@ -312,10 +312,6 @@ void check_input(const CurveFitProblem& problem, const CurveFitOptions& o) {
                                     "tests (a shared threshold switches each test at another "
                                     "depth: not supported yet)",
                                     problem.tests.size())});
-    if (o.free.size() == 1)
-      errors.push_back({"free",
-                        "stick-threshold needs another free parameter (e.g. shear-modulus): "
-                        "the profile re-fits the others at each place of the switch"});
     if (is_free(CurveParameter::ContactOffset))
       errors.push_back({"free",
                         "stick-threshold and contact-offset cannot both be free: the offset "

@@ -12,6 +12,7 @@
 #include <limits>
 #include <map>
 
+#include "calibration/curve_model.hpp"
 #include "puncture/loading_curve.hpp"
 
 namespace puncture::detail {
@@ -82,6 +83,52 @@ double threshold_at(const Problem& p, double depth_mm, const SolverOptions& solv
   }
 }
 
+// A place when no other parameter is free: the model's curve at the test's own parameters.
+CurveFit evaluate_place(const CurveTest& test, const CurveFitOptions& options) {
+  const CurveModel model(test, 0, {}, options.solver, test.puncture.has_value());
+  const ModelCurve at = model.evaluate(nullptr);
+  CurveFit fit;
+  fit.curve_evaluations = model.solves();
+  if (!at.ok) {
+    fit.status = Status::NoConvergence;
+    fit.message = "the model fails at the test's parameters: " + at.message;
+    return fit;
+  }
+  CurveTestFit tf;
+  tf.name = test.name;
+  tf.depth_mm = test.depth_mm;
+  tf.force_n = test.force_n;
+  tf.model_force_n = at.force_n;
+  double ssr = 0.0, mean = 0.0, sst = 0.0;
+  for (const double f : test.force_n) mean += f / static_cast<double>(test.force_n.size());
+  for (std::size_t i = 0; i < at.force_n.size(); ++i) {
+    tf.residual_n.push_back(at.force_n[i] - test.force_n[i]);
+    ssr += tf.residual_n.back() * tf.residual_n.back();
+    sst += (test.force_n[i] - mean) * (test.force_n[i] - mean);
+  }
+  const auto n = static_cast<double>(at.force_n.size());
+  tf.rms_residual_n = std::sqrt(ssr / n);
+  tf.measured_puncture = test.puncture;
+  if (at.puncture_force_n && at.puncture_depth_mm)
+    tf.model_puncture = MeasuredPuncture{*at.puncture_depth_mm, *at.puncture_force_n};
+  fit.tests.push_back(std::move(tf));
+  fit.fitted_problems.push_back(test.problem);
+  fit.points = static_cast<int>(n);
+  fit.residual_sd_n = std::sqrt(ssr / n);
+  fit.r_squared = sst > 0.0 ? 1.0 - ssr / sst : 0.0;
+  fit.status = Status::Converged;
+  if (fit.r_squared < options.min_r_squared) {
+    fit.status = Status::OutsideModel;
+    fit.message = fmt::format(
+        "the model explains {:.3g} % of the force variance (R^2 = {:.4g} < {:g}): the record is "
+        "not a force-depth curve of this model",
+        100.0 * std::max(0.0, fit.r_squared),
+        fit.r_squared,
+        options.min_r_squared);
+  }
+  return fit;
+}
+
 }  // namespace
 
 CurveFit fit_with_stick_threshold_profile(const CurveFitProblem& problem,
@@ -128,7 +175,7 @@ CurveFit fit_with_stick_threshold_profile(const CurveFitProblem& problem,
       for (const auto& fp : places.at(nearest).fit.parameters)
         set_value(fp.parameter, t.problem, fp.value);
     Place pl;
-    pl.fit = fit_curves(pk, inner);
+    pl.fit = inner.free.empty() ? evaluate_place(t, inner) : fit_curves(pk, inner);
     iterations += pl.fit.iterations;
     curves += pl.fit.curve_evaluations;
     if (!pl.fit.tests.empty()) {

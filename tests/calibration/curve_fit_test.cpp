@@ -419,7 +419,8 @@ TEST(CurveFit, StickThresholdIntervalsCoverTheTruth) {
 }
 
 // A record without a switch (held beyond its end) does not identify the threshold: OnBound,
-// saying so.  Refused: the threshold with several tests, alone, or with the contact offset.
+// saying so.  Refused: the threshold with several tests, or with the contact offset.  Alone (G
+// held at the truth) each place is the curve itself: the interval holds the truth.
 TEST(CurveFit, StickThresholdWithoutASwitchAndRefusals) {
   Problem truth = paper();
   truth.stick = {StickRule::Force, 5.0};
@@ -432,8 +433,16 @@ TEST(CurveFit, StickThresholdWithoutASwitchAndRefusals) {
   EXPECT_NE(fit.message.find("past its last point"), std::string::npos) << fit.message;
   EXPECT_FALSE(fit.parameters[1].identifiable);
   EXPECT_THROW(fit_curves({{test, test}}, o), InvalidInput);
+  Problem held = paper();
+  held.stick = {StickRule::Force, 0.3};
+  auto with_switch = synthetic(held, 120, 0.002, 41);
+  with_switch.problem.stick.threshold = 0.2;
   o.free = {CurveParameter::StickThreshold};
-  EXPECT_THROW(fit_curves({{test}}, o), InvalidInput);
+  const auto alone = fit_curves({{with_switch}}, o);
+  ASSERT_TRUE(alone.ok()) << alone.message;
+  ASSERT_EQ(alone.parameters.size(), 1u);
+  EXPECT_TRUE(covers(alone.parameters[0], 0.3)) << alone.parameters[0].note;
+  EXPECT_TRUE(alone.correlation.empty());
   o.free = {
       CurveParameter::ShearModulus, CurveParameter::StickThreshold, CurveParameter::ContactOffset};
   EXPECT_THROW(fit_curves({{test}}, o), InvalidInput);

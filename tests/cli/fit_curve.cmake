@@ -49,10 +49,10 @@ puncture_cli_bad_input(fit_curve_bad_bound "--bound: expected NAME:LO:HI"
   fit curve ${dir}/indentation_record.csv --free jlim --bound jlim:500:50)
 puncture_cli_bad_input(fit_curve_no_files "give the CSV records"
   fit curve --free jlim)
-puncture_cli_bad_input(fit_curve_stick_threshold_alone
-  "--free: stick-threshold needs another free parameter"
-  fit curve ${dir}/indentation_record.csv --free stick-threshold --stick force:0.3
-  --contact-depth 2)
+puncture_cli_test(fit_curve_stick_threshold_alone
+  STDOUT "  stick-threshold +0\\.[23][0-9]* N  95 % interval \\[0\\.2[0-9]*, 0\\.3[0-9]*\\] from the profile"
+  ARGS fit curve ${dir}/indentation_record_stick.csv --free stick-threshold --stick force:0.25
+       --contact-depth 2)
 puncture_cli_bad_input(fit_curve_stick_threshold_without_threshold_rule
   "--free: test .*indentation_record.csv: stick-threshold is free but the stick rule 'none' has no threshold"
   fit curve ${dir}/indentation_record.csv --free shear-modulus,stick-threshold --contact-depth 2)
