@@ -321,9 +321,10 @@ CurveFit fit_with_stick_threshold_profile(const CurveFitProblem& problem,
         "a test that passes the stick -> slip switch");
   } else {
     tp.note = fmt::format(
-        "95 % interval from the profile of the cost (the others re-fitted at each place of the "
-        "switch; a rise of {:.3g} residual variances): the switch lies between the measured "
-        "depths {:.6g} and {:.6g} mm",
+        "95 % interval from the profile of the cost ({} at each place of the switch; a rise of "
+        "{:.3g} residual variances): the switch lies between the measured depths {:.6g} and "
+        "{:.6g} mm",
+        inner.free.empty() ? "the curve" : "the others re-fitted",
         quantile,
         u[static_cast<std::size_t>(best - 1)] + offset,
         u[static_cast<std::size_t>(best)] + offset);
