@@ -3,6 +3,10 @@
 //   BM_FitCurveThreeParameters     G, J_lim and friction fitted to one 200-point record from a
 //                                  start 15-30 % off (the target: <= 2 s on one core)
 //   BM_FitCurveFourTests           the same three jointly to four records (target <= 5 s)
+//   BM_FitCurveStickThreshold      G and a force threshold (0.3 N) from one 200-point record with
+//                                  a switch: the profile over the place of the switch
+//   BM_FitCurveContactOffset       G, J_lim and the contact offset from one 200-point record
+//                                  whose depths are 1.5 mm short
 // The records are the model's with known parameters plus seeded noise (0.5 % of the largest
 // force), as in tests/calibration/curve_fit_test.cpp.
 #include <benchmark/benchmark.h>
@@ -28,7 +32,14 @@ CurveTest record(const Problem& truth, unsigned seed) {
   const auto curve = loading_curve(truth, c);
   std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0.0, 0.005 * curve.points.back().force_n);
-  for (const auto& pt : curve.points) t.force_n.push_back(pt.force_n + noise(rng));
+  // One force per depth: at a stick -> slip switch the curve also has the held and the sliding
+  // state at the switch's own depth; a measured depth reads the last point at it.
+  for (const double d : t.depth_mm) {
+    double f = 0.0;
+    for (const auto& pt : curve.points)
+      if (pt.depth_mm == d) f = pt.force_n;
+    t.force_n.push_back(f + noise(rng));
+  }
   // The fit's start, off the truth.
   t.problem.material.shear_modulus_mpa *= 1.2;
   std::get<Gent>(t.problem.material.law).j_lim *= 1.3;
@@ -82,5 +93,45 @@ void BM_FitCurveFourTests(benchmark::State& state) {
   state.counters["curves"] = curves;
 }
 BENCHMARK(BM_FitCurveFourTests)->Unit(benchmark::kMillisecond);
+
+void BM_FitCurveStickThreshold(benchmark::State& state) {
+  Problem truth;
+  truth.stick = {StickRule::Force, 0.3};
+  auto t = record(truth, 3);
+  t.problem.stick.threshold = 0.2;
+  CurveFitOptions options;
+  options.free = {CurveParameter::ShearModulus, CurveParameter::StickThreshold};
+  const CurveFitProblem problem{{t}};
+  int curves = 0;
+  for (auto _ : state) {
+    const auto fit = fit_curves(problem, options);
+    curves = fit.curve_evaluations;
+    benchmark::DoNotOptimize(fit);
+  }
+  state.counters["curves"] = curves;
+}
+BENCHMARK(BM_FitCurveStickThreshold)->Unit(benchmark::kMillisecond);
+
+void BM_FitCurveContactOffset(benchmark::State& state) {
+  auto t = record(Problem{}, 4);
+  t.problem.friction = Problem{}.friction;
+  for (auto& d : t.depth_mm) d -= 1.5;
+  while (t.depth_mm.front() <= 0.0) {
+    t.depth_mm.erase(t.depth_mm.begin());
+    t.force_n.erase(t.force_n.begin());
+  }
+  CurveFitOptions options;
+  options.free = {
+      CurveParameter::ShearModulus, CurveParameter::JLim, CurveParameter::ContactOffset};
+  const CurveFitProblem problem{{t}};
+  int curves = 0;
+  for (auto _ : state) {
+    const auto fit = fit_curves(problem, options);
+    curves = fit.curve_evaluations;
+    benchmark::DoNotOptimize(fit);
+  }
+  state.counters["curves"] = curves;
+}
+BENCHMARK(BM_FitCurveContactOffset)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -43,8 +43,10 @@ void bind_curve_fit(py::module_& m) {
                        const py::array_t<double, py::array::forcecast>& depth_mm,
                        const py::array_t<double, py::array::forcecast>& force_n,
                        const std::string& name,
-                       const std::optional<std::pair<double, double>>& puncture) {
+                       const std::optional<std::pair<double, double>>& puncture,
+                       double contact_offset_mm) {
              CurveTest t;
+             t.contact_offset_mm = contact_offset_mm;
              t.name = name;
              t.problem = problem;
              t.depth_mm = to_vector(depth_mm, "depth_mm");
@@ -57,19 +59,27 @@ void bind_curve_fit(py::module_& m) {
            py::arg("force_n"),
            py::arg("name") = "test",
            py::arg("puncture") = py::none(),
+           py::arg("contact_offset_mm") = 0.0,
            "problem: geometry, probe, fixed parameters (the free ones' values are the start);\n"
            "depth_mm from the contact point (> 0, not decreasing), force_n [N];\n"
-           "puncture: (depth_mm, force_n) of the perforation, when the record has it")
+           "puncture: (depth_mm, force_n) of the perforation, when the record has it;\n"
+           "contact_offset_mm: the model's depth is depth_mm minus it (the start when\n"
+           "'contact-offset' is free)")
       .def_readonly("name", &CurveTest::name)
-      .def_readonly("problem", &CurveTest::problem);
+      .def_readonly("problem", &CurveTest::problem)
+      .def_readonly("contact_offset_mm", &CurveTest::contact_offset_mm);
 
   py::class_<FittedCurveParameter>(m, "FittedCurveParameter", "One fitted parameter")
       .def_readonly("name", &FittedCurveParameter::name, "'shear-modulus', 'jlim', ...")
       .def_readonly("unit", &FittedCurveParameter::unit)
+      .def_readonly("test", &FittedCurveParameter::test, "a per-test parameter's test, else ''")
       .def_readonly("value", &FittedCurveParameter::value)
       .def_readonly("standard_error", &FittedCurveParameter::standard_error)
       .def_readonly("ci_lower", &FittedCurveParameter::ci_lower, "95 % interval")
       .def_readonly("ci_upper", &FittedCurveParameter::ci_upper, "95 % interval")
+      .def_readonly("profile_interval",
+                    &FittedCurveParameter::profile_interval,
+                    "the interval is the profile's (stick-threshold), not value -+ t se")
       .def_readonly("on_bound", &FittedCurveParameter::on_bound)
       .def_readonly("identifiable", &FittedCurveParameter::identifiable)
       .def_readonly("note", &FittedCurveParameter::note)

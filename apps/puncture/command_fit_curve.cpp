@@ -244,7 +244,8 @@ void add_fit_curve_command(CLI::App& fit, FitCurveFlags& f) {
       "or tab).  The depth's zero is --contact-depth (in the record's unit) or the contact\n"
       "found from the data: the last point before the force rises above the first 10\n"
       "forces' mean + 5 sd for 5 points in a row (late by ~(threshold/F)^(1/3) of the depth,\n"
-      "since the force grows as depth^3: give it when known).  The record ends at the\n"
+      "since the force grows as depth^3: give it when known, or fit each test's offset\n"
+      "from it with --free ...,contact-offset).  The record ends at the\n"
       "perforation: the largest force before the first one below (1 - --perforation-drop)\n"
       "of it, once it has reached a tenth of the record's largest; that point is the\n"
       "puncture point, fitted too (sd --puncture-sd of its force and depth) unless\n"
@@ -279,8 +280,12 @@ void add_fit_curve_command(CLI::App& fit, FitCurveFlags& f) {
       ->add_option("--free",
                    f.free,
                    "Parameters to fit, comma-separated: shear-modulus [MPa], jlim,\n"
-                   "friction, critical-i1 (needs a puncture point); stick-threshold\n"
-                   "is refused so far (a step function of the residuals)")
+                   "friction, critical-i1 (needs a puncture point), stick-threshold\n"
+                   "(the --stick rule's, in its unit; one test, alone or with others;\n"
+                   "by a profile over where the switch falls, its interval where the\n"
+                   "cost rises by chi2(0.95, 1)), contact-offset [mm] (each test's own:\n"
+                   "the model's depth is the record's minus it; removes the bias of a\n"
+                   "contact point found late)")
       ->required()
       ->type_name("LIST")
       ->group(kFit);
@@ -347,7 +352,8 @@ void add_fit_curve_command(CLI::App& fit, FitCurveFlags& f) {
                    f.bounds,
                    "NAME:LO:HI, the range of a free parameter (its unit), repeatable;\n"
                    "defaults: shear-modulus 1e-6:1e3, jlim (critical-i1 - 3):1e6,\n"
-                   "friction 0:10, critical-i1 3:1e4")
+                   "friction 0:10, critical-i1 3:1e4, stick-threshold 1e-12:1e6,\n"
+                   "contact-offset -+ half of each test's deepest depth [mm]")
       ->type_name("NAME:LO:HI")
       ->group(kFit);
   f.app->add_option("--loss", f.loss, "Robust loss of the curve residuals: none, huber, cauchy")

@@ -26,19 +26,30 @@ namespace puncture {
 
 // A parameter the fit can determine.  The shear modulus scales the force (F = 2 pi G H A f);
 // J_lim (Gent) and the friction shape the curve; the critical I1 sets only where it ends (the
-// puncture point); the stick threshold where the membrane starts to slide (refused by fit_curves
-// so far: the residuals are a step function of it).
-enum class CurveParameter { ShearModulus, JLim, Friction, CriticalI1, StickThreshold };
+// puncture point); the stick threshold where the membrane starts to slide (the residuals are a
+// step function of it: fitted by a profile over where the switch falls, not by gradients).
+// The contact offset is each test's own: the model's depth is the measured depth minus it (a
+// contact point found late by the record's reader is a negative offset).
+enum class CurveParameter {
+  ShearModulus,
+  JLim,
+  Friction,
+  CriticalI1,
+  StickThreshold,
+  ContactOffset
+};
 
-// "shear-modulus", "jlim", "friction", "critical-i1", "stick-threshold" (as on the command line).
+// "shear-modulus", "jlim", "friction", "critical-i1", "stick-threshold", "contact-offset" (as on
+// the command line).
 std::string to_token(CurveParameter parameter);
 std::optional<CurveParameter> curve_parameter_from_token(std::string_view token);
 // Every token, comma-separated, for messages.
 std::string curve_parameter_tokens();
-// "MPa", "", "", "", or the stick rule's unit (N, mm, N/mm).
+// "MPa", "", "", "", the stick rule's unit (N, mm, N/mm), or "mm" (contact offset).
 std::string unit_of(CurveParameter parameter, const Problem& problem);
 // The parameter's value in the problem (throws InvalidInput when the problem has none: J_lim
-// without the Gent law, a stick threshold without a threshold rule).
+// without the Gent law, a stick threshold without a threshold rule, the contact offset, which
+// belongs to a test's record: CurveTest::contact_offset_mm).
 double value_of(CurveParameter parameter, const Problem& problem);
 void set_value(CurveParameter parameter, Problem& problem, double value);
 
@@ -55,6 +66,9 @@ struct CurveTest {
   std::vector<double> depth_mm;  // measured depths from the contact point, > 0, non-decreasing
   std::vector<double> force_n;   // measured force at each depth [N]
   std::optional<MeasuredPuncture> puncture;
+  // The model's depth is depth_mm - contact_offset_mm (a point at a model depth <= 0 has no
+  // force); the starting value when contact-offset is free [mm].
+  double contact_offset_mm = 0.0;
 };
 
 struct CurveFitProblem {
@@ -70,7 +84,7 @@ struct ParameterBounds {
 enum class RobustLoss { None, Huber, Cauchy };
 
 struct CurveFitOptions {
-  std::vector<CurveParameter> free;     // the fitted parameters, shared by every test
+  std::vector<CurveParameter> free;     // the fitted parameters (contact-offset: one per test)
   std::vector<ParameterBounds> bounds;  // overrides of the default bounds (default_bounds)
   RobustLoss loss = RobustLoss::None;   // on the curve residuals (ceres::HuberLoss, CauchyLoss)
   double loss_scale_n = 0.0;            // the loss's scale [N]; needed with a robust loss
@@ -99,17 +113,23 @@ struct CurveFitOptions {
 
 // The bounds used when CurveFitOptions::bounds does not give them: G in [1e-6, 1e3] MPa, J_lim
 // in (critical I1 - 3, 1e6], friction in [0, 10], critical I1 in (3, 1e4], a stick threshold in
-// (0, 1e6].
+// (0, 1e6], a contact offset in [-1e3, 1e3] mm (fit_curves narrows it to -+ half of each test's
+// deepest measured depth).
 ParameterBounds default_bounds(CurveParameter parameter, const Problem& problem);
 
 struct FittedCurveParameter {
   CurveParameter parameter = CurveParameter::ShearModulus;
   std::string name;  // token, e.g. "jlim"
   std::string unit;  // e.g. "MPa", "" when dimensionless
+  std::string test;  // the test of a per-test parameter (contact-offset); empty when shared
   double value = 0.0;
-  std::optional<double> standard_error;  // empty when the covariance is rank-deficient
-  std::optional<double> ci_lower;        // 95 % interval, value -+ t(0.975, n - p) se
+  // Empty when the covariance is rank-deficient, and for the stick threshold (a profile).
+  std::optional<double> standard_error;
+  // 95 % interval, value -+ t(0.975, n - p) se; for the stick threshold (profile_interval) the
+  // thresholds at which the profile of the cost (the others re-fitted) rises by chi2(0.95, 1).
+  std::optional<double> ci_lower;
   std::optional<double> ci_upper;
+  bool profile_interval = false;
   bool on_bound = false;
   bool identifiable = true;
   std::string note;  // why not identifiable, and which test would identify it
@@ -131,8 +151,11 @@ struct CurveTestFit {
 // variance: the data are not a curve of this model); NoConvergence (message: why), also when
 // the model fails at the starting point.
 struct CurveFit : Outcome {
-  std::vector<FittedCurveParameter> parameters;  // in CurveFitOptions::free order
-  std::vector<std::vector<double>> correlation;  // empty when the covariance is rank-deficient
+  // The shared parameters in CurveFitOptions::free order, then each test's contact offset.
+  std::vector<FittedCurveParameter> parameters;
+  // Empty when the covariance is rank-deficient; the stick threshold's row and column are 0 (its
+  // interval is a profile, in which the others are re-fitted).
+  std::vector<std::vector<double>> correlation;
   std::vector<CurveTestFit> tests;
   std::vector<std::string> warnings;  // not identifiable, |r| > 0.99, on a bound
   double residual_sd_n = 0.0;         // sqrt(sum r^2 / (n - p)) over the curve residuals
@@ -143,12 +166,18 @@ struct CurveFit : Outcome {
   std::vector<Problem> fitted_problems;  // each test's problem at the estimates
 };
 
-// Throws InvalidInput: no test or no free parameter, a parameter twice, stick-threshold free,
-// a parameter the problems do not have (J_lim without Gent), the critical I1 free without a
-// puncture point, a test with fewer points than free parameters + 1, mismatched lengths, a
-// depth that is not finite and > 0 or decreases, a force that is not finite, bounds that are
-// not finite with lower < upper, an invalid problem or options.  The start is clamped into the
-// bounds.
+// The stick threshold (one test, not with contact-offset; alone, a place is the curve): for each
+// place of the switch between two measured depths the others are fitted with the switch there
+// (a grid, then a Brent search over the place, the cost a step function of it); the estimate is the
+// middle of the thresholds that put the switch between the best two depths, its interval the
+// thresholds over which the cost rises by at most chi2(0.95, 1) = 3.84 residual variances, widened
+// by 1.96 standard errors of the threshold at its ends from the other parameters' covariance.
+// Throws InvalidInput: no test or no free parameter, a parameter twice, stick-threshold free
+// with several tests or with contact-offset, a parameter the problems do not have (J_lim
+// without Gent), the critical I1 free without a puncture point, a test with fewer points than free
+// parameters + 1, mismatched lengths, a depth that is not finite and > 0 or decreases, a force that
+// is not finite, bounds that are not finite with lower < upper, an invalid problem or options.  The
+// start is clamped into the bounds.
 CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& options);
 
 std::string to_string(RobustLoss loss);

@@ -501,3 +501,35 @@ def test_fit_curves_errors():
         pu.fit_curves([test], ["critical-i1"])
     with pytest.raises(ValueError, match="bad_cell.csv:4: column 2"):
         pu.read_force_depth_record(str(DATA / "indentation_bad_cell.csv"), contact_depth=0.0)
+
+
+def test_fit_curves_contact_offset_and_stick_threshold(cli):
+    """Each test's contact offset (model depth = depth - offset) and the stick threshold's
+    profile give the CLI's numbers, with the offset's test and the threshold's profile interval
+    named."""
+    record = pu.read_force_depth_record(str(DATA / "indentation_record.csv"))
+    assert record["contact_found"]
+    test = pu.CurveTest(pu.Problem(), record["depth_mm"], record["force_n"],
+                        puncture=record["puncture"], name="found")
+    fit = pu.fit_curves([test], ["shear-modulus", "jlim", "contact-offset"])
+    rc, out, err = cli.run("fit", "curve", DATA / "indentation_record.csv", "--free",
+                           "shear-modulus,jlim,contact-offset", "--format", "json")
+    assert rc == 0, err
+    import json
+    free = json.loads(out)["fit"]["free"]
+    offset = fit.parameter("contact-offset")
+    assert offset.test == "found" and free[2]["test"].endswith("indentation_record.csv")
+    assert same(offset.value, free[2]["value"])
+    assert not offset.profile_interval and free[2]["interval"] == "t"
+    # Found 3.17 mm late (the contact is at 2 mm): the offset's interval holds -3.17 mm.
+    late = record["contact_depth_mm"] - 2.0
+    assert offset.ci_lower <= -late <= offset.ci_upper
+
+    stick = pu.read_force_depth_record(str(DATA / "indentation_record_stick.csv"),
+                                       contact_depth=2.0)
+    held = pu.Problem(stick=pu.StickCriterion(pu.StickRule.Force, 0.25))
+    fit = pu.fit_curves([pu.CurveTest(held, stick["depth_mm"], stick["force_n"])],
+                        ["shear-modulus", "stick-threshold"])
+    tau = fit.parameter("stick-threshold")
+    assert fit.ok and tau.profile_interval and tau.standard_error is None
+    assert tau.ci_lower <= 0.3 <= tau.ci_upper

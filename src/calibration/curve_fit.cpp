@@ -23,12 +23,14 @@
 #include <numeric>
 
 #include "calibration/curve_model.hpp"
+#include "calibration/stick_threshold_profile.hpp"
 
 namespace puncture {
 
 namespace {
 
 using detail::CurveModel;
+using detail::FreeColumn;
 using detail::ModelCurve;
 
 // Which residuals of a test a block holds, and their weights.
@@ -72,6 +74,10 @@ class ModelCost : public ceres::CostFunction {
         down(static_cast<std::size_t>(n));
     for (int j = 0; j < p; ++j) {
       const auto ju = static_cast<std::size_t>(j);
+      if (!model_.depends_on(ju)) {  // another test's own parameter
+        for (int i = 0; i < n; ++i) jacobians[0][i * p + j] = 0.0;
+        continue;
+      }
       const double h = steps_[ju] * std::max(std::abs(x[j]), scale(j));
       // Central where both sides are inside the bounds and solve; else one-sided.
       double hi = x[j] + h, lo = x[j] - h;
@@ -229,6 +235,8 @@ std::string identifying_test(CurveParameter p) {
       return "a test run to perforation (its puncture point)";
     case CurveParameter::StickThreshold:
       return "a test that passes the stick -> slip switch";
+    case CurveParameter::ContactOffset:
+      return "the contact point given (--contact-depth) or a record from before the contact";
   }
   return "";
 }
@@ -249,7 +257,7 @@ void check_input(const CurveFitProblem& problem, const CurveFitOptions& o) {
       errors.push_back(std::move(e));
     }
     for (const auto f : o.free) try {
-        value_of(f, t.problem);
+        if (f != CurveParameter::ContactOffset) value_of(f, t.problem);
       } catch (const InvalidInput& e) {
         errors.push_back({"free", fmt::format("test {}: {}", t.name, e.what())});
       }
@@ -294,13 +302,21 @@ void check_input(const CurveFitProblem& problem, const CurveFitOptions& o) {
              fmt::format("test {}: the puncture point must have a force and a depth > 0", t.name)});
     }
   }
-  if (std::find(o.free.begin(), o.free.end(), CurveParameter::StickThreshold) != o.free.end())
-    errors.push_back(
-        {"free",
-         "stick-threshold cannot be fitted by gradients yet: the force jumps at the stick -> "
-         "slip switch, so between two measured depths a change of the threshold changes no "
-         "residual (its derivative is 0, measured: a start at 0.25 N against 0.3 N stays there "
-         "with a standard error of 9e3 N); it needs a profile search over the switch"});
+  const auto is_free = [&](CurveParameter f) {
+    return std::find(o.free.begin(), o.free.end(), f) != o.free.end();
+  };
+  if (is_free(CurveParameter::StickThreshold)) {
+    if (problem.tests.size() != 1)
+      errors.push_back({"free",
+                        fmt::format("stick-threshold is fitted from one test's switch, got {} "
+                                    "tests (a shared threshold switches each test at another "
+                                    "depth: not supported yet)",
+                                    problem.tests.size())});
+    if (is_free(CurveParameter::ContactOffset))
+      errors.push_back({"free",
+                        "stick-threshold and contact-offset cannot both be free: the offset "
+                        "would move the measured depths across the switch"});
+  }
   if (std::find(o.free.begin(), o.free.end(), CurveParameter::CriticalI1) != o.free.end() &&
       !any_puncture)
     errors.push_back({"free",
@@ -330,29 +346,59 @@ void check_input(const CurveFitProblem& problem, const CurveFitOptions& o) {
 
 CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
   check_input(problem, o);
-  const std::size_t p = o.free.size();
+  if (std::find(o.free.begin(), o.free.end(), CurveParameter::StickThreshold) != o.free.end())
+    return detail::fit_with_stick_threshold_profile(problem, o);
   const Problem& first = problem.tests.front().problem;
 
+  // The parameter vector: the shared parameters, then each test's contact offset.
+  std::vector<FreeColumn> columns;
+  for (const auto f : o.free)
+    if (f != CurveParameter::ContactOffset) columns.push_back({f, -1});
+  if (std::find(o.free.begin(), o.free.end(), CurveParameter::ContactOffset) != o.free.end())
+    for (std::size_t t = 0; t < problem.tests.size(); ++t)
+      columns.push_back({CurveParameter::ContactOffset, static_cast<int>(t)});
+  const std::size_t p = columns.size();
   std::vector<ParameterBounds> bounds;
   std::vector<double> x, steps(p, o.relative_step);
-  for (const auto f : o.free) {
-    auto b = default_bounds(f, first);
+  for (const auto& c : columns) {
+    auto b = default_bounds(c.parameter, first);
+    double start = 0.0;
+    if (c.test >= 0) {  // the contact offset: within half the test's deepest point
+      const auto& t = problem.tests[static_cast<std::size_t>(c.test)];
+      const double half = 0.5 * *std::max_element(t.depth_mm.begin(), t.depth_mm.end());
+      b = {c.parameter, -half, half};
+      start = t.contact_offset_mm;
+    } else {
+      start = value_of(c.parameter, first);
+    }
     for (const auto& given : o.bounds)
-      if (given.parameter == f) b = given;
+      if (given.parameter == c.parameter) b = given;
     bounds.push_back(b);
-    x.push_back(std::clamp(value_of(f, first), b.lower, b.upper));
+    x.push_back(std::clamp(start, b.lower, b.upper));
   }
   const auto index_of = [&](CurveParameter f) -> std::optional<std::size_t> {
-    const auto it = std::find(o.free.begin(), o.free.end(), f);
-    if (it == o.free.end()) return std::nullopt;
-    return static_cast<std::size_t>(it - o.free.begin());
+    for (std::size_t j = 0; j < p; ++j)
+      if (columns[j].parameter == f && columns[j].test < 0) return j;
+    return std::nullopt;
+  };
+  // A column's name in messages: a test's own parameter names its test.
+  const auto name_of = [&](std::size_t j) {
+    const auto& c = columns[j];
+    return c.test < 0 ? to_token(c.parameter)
+                      : fmt::format("{} of test {}",
+                                    to_token(c.parameter),
+                                    problem.tests[static_cast<std::size_t>(c.test)].name);
   };
   bool any_puncture = false;
   for (const auto& t : problem.tests) any_puncture = any_puncture || t.puncture.has_value();
 
   std::vector<std::unique_ptr<CurveModel>> models;
-  for (const auto& t : problem.tests)
-    models.push_back(std::make_unique<CurveModel>(t, o.free, o.solver, t.puncture.has_value()));
+  for (std::size_t t = 0; t < problem.tests.size(); ++t)
+    models.push_back(std::make_unique<CurveModel>(problem.tests[t],
+                                                  static_cast<int>(t),
+                                                  columns,
+                                                  o.solver,
+                                                  problem.tests[t].puncture.has_value()));
 
   CurveFit fit;
   const auto solves = [&] {
@@ -496,8 +542,8 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
       if (!(norms[static_cast<Eigen::Index>(j)] > 0.0))
         fit.warnings.push_back(
             fmt::format("{} is not identifiable: the data do not depend on it; it would take {}",
-                        to_token(o.free[j]),
-                        identifying_test(o.free[j])));
+                        name_of(j),
+                        identifying_test(columns[j].parameter)));
     if ((norms.array() > 0.0).all() && norms.allFinite()) {
       const Eigen::MatrixXd scaled = jac * norms.cwiseInverse().asDiagonal();
       const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeThinV);
@@ -508,9 +554,9 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
         fit.warnings.push_back(
             fmt::format("{} is not identifiable from these tests (the Jacobian is rank-deficient, "
                         "condition {:.2g}); it would take {}",
-                        to_token(o.free[static_cast<std::size_t>(worst)]),
+                        name_of(static_cast<std::size_t>(worst)),
                         sv.maxCoeff() / sv.minCoeff(),
-                        identifying_test(o.free[static_cast<std::size_t>(worst)])));
+                        identifying_test(columns[static_cast<std::size_t>(worst)].parameter)));
       } else {
         const Eigen::MatrixXd v = svd.matrixV();
         const Eigen::VectorXd inv_norms = norms.cwiseInverse();
@@ -530,9 +576,11 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
                                     : 0.0;
   for (std::size_t j = 0; j < p; ++j) {
     FittedCurveParameter fp;
-    fp.parameter = o.free[j];
-    fp.name = to_token(o.free[j]);
-    fp.unit = unit_of(o.free[j], first);
+    fp.parameter = columns[j].parameter;
+    fp.name = to_token(columns[j].parameter);
+    fp.unit = unit_of(columns[j].parameter, first);
+    if (columns[j].test >= 0)
+      fp.test = problem.tests[static_cast<std::size_t>(columns[j].test)].name;
     fp.value = x[j];
     const double span = bounds[j].upper - bounds[j].lower;
     const double tol = 1e-6 * std::max(std::abs(x[j]), 1e-3 * span);
@@ -543,25 +591,28 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
       fp.ci_upper = x[j] + t_quantile * *fp.standard_error;
       // Within two standard errors of zero (as fit_uniaxial): the data bound the parameter
       // no better than its own size.
-      if (2.0 * *fp.standard_error >= std::abs(x[j])) {
+      // (Not for a contact offset, whose 0 is a value like any other: the contact found right.)
+      if (2.0 * *fp.standard_error >= std::abs(x[j]) &&
+          columns[j].parameter != CurveParameter::ContactOffset) {
         fp.identifiable = false;
         fp.note = fmt::format(
             "not identifiable: {} +- {} is within two standard errors of 0; {} "
             "would identify it",
             x[j],
             *fp.standard_error,
-            identifying_test(o.free[j]));
+            identifying_test(columns[j].parameter));
         fit.warnings.push_back(
             fmt::format("{} is not identifiable from these tests ({:.4g} +- {:.2g}); it would "
                         "take {}",
-                        fp.name,
+                        name_of(j),
                         x[j],
                         *fp.standard_error,
-                        identifying_test(o.free[j])));
+                        identifying_test(columns[j].parameter)));
       }
     } else {
       fp.identifiable = false;
-      fp.note = "no standard error: " + identifying_test(o.free[j]) + " would identify it";
+      fp.note =
+          "no standard error: " + identifying_test(columns[j].parameter) + " would identify it";
     }
     fit.parameters.push_back(fp);
   }
@@ -577,16 +628,16 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
             fit.parameters[k].identifiable = false;
             fit.parameters[k].note = fmt::format(
                 "correlated with {} (r = {:.4f}): the data fix a combination of the two",
-                to_token(o.free[k == i ? j : i]),
+                name_of(k == i ? j : i),
                 fit.correlation[i][j]);
           }
           fit.warnings.push_back(fmt::format(
               "{} and {} are not separately identifiable from these tests (r = {:.4f}); "
               "{} would separate them",
-              to_token(o.free[i]),
-              to_token(o.free[j]),
+              name_of(i),
+              name_of(j),
               fit.correlation[i][j],
-              identifying_test(o.free[i])));
+              identifying_test(columns[i].parameter)));
         }
   } else {
     for (auto& fp : fit.parameters) fp.identifiable = false;
@@ -605,7 +656,7 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
       fit.message = fmt::format(
           "{} = {:.6g} lies on a bound of its range [{:.6g}, {:.6g}]: the data want a value "
           "outside it, and the estimates are not a fit inside the model{}",
-          fp.name,
+          name_of(static_cast<std::size_t>(&fp - fit.parameters.data())),
           fp.value,
           b.lower,
           b.upper,

@@ -1,8 +1,9 @@
 #pragma once
 // The model of one measured force-depth record at given values of the free parameters: the
-// loading curve at exactly the record's depths and the predicted puncture point.  Results are
-// cached by the parameters that change the curve's shape: the force is proportional to the
-// shear modulus (F = 2 pi G H A f(depth / A), without gas pressure), so a step in G alone
+// loading curve at exactly the record's depths (less the test's contact offset) and the predicted
+// puncture point.  Results are cached by the parameters that change the curve's shape: the force
+// is proportional to the shear modulus (F = 2 pi G H A f(depth / A), without gas pressure and
+// without a stick threshold in N or N/mm, which does not scale with G), so a step in G alone
 // reuses the normalised curve, and a Jacobian column in G costs no solve.
 #include <map>
 #include <optional>
@@ -13,21 +14,32 @@
 
 namespace puncture::detail {
 
+// One entry of the fit's parameter vector: a parameter shared by every test (test < 0), or one
+// test's own (the contact offset).
+struct FreeColumn {
+  CurveParameter parameter = CurveParameter::ShearModulus;
+  int test = -1;
+};
+
 struct ModelCurve {
   bool ok = false;
-  std::string message;                     // why not, when !ok
-  std::vector<double> force_n;             // at each measured point (in the test's order)
-  std::optional<double> puncture_force_n;  // when the model punctures
-  std::optional<double> puncture_depth_mm;
+  std::string message;                      // why not, when !ok
+  std::vector<double> force_n;              // at each measured point (in the test's order)
+  std::optional<double> puncture_force_n;   // when the model punctures
+  std::optional<double> puncture_depth_mm;  // in the record's frame (the offset added back)
 };
 
 class CurveModel {
  public:
-  // `free` names the entries of the parameter vectors passed to evaluate().
-  CurveModel(const CurveTest& test, std::vector<CurveParameter> free, const SolverOptions& solver,
-             bool needs_puncture);
+  // `columns` names the entries of the parameter vectors passed to evaluate(); `test_index` is
+  // this test's place among the tests (its own contact offset's column).
+  CurveModel(const CurveTest& test, int test_index, std::vector<FreeColumn> columns,
+             const SolverOptions& solver, bool needs_puncture);
   ModelCurve evaluate(const double* x) const;
   Problem problem_at(const double* x) const;
+  double contact_offset_at(const double* x) const;
+  // Whether the entry `column` of the parameter vector changes this test's model.
+  bool depends_on(std::size_t column) const;
   int solves() const { return solves_; }
   const CurveTest& test() const { return test_; }
 
@@ -37,17 +49,16 @@ class CurveModel {
     std::string message;
     std::vector<double> force;
     std::optional<double> puncture_force;
-    std::optional<double> puncture_depth_mm;
+    std::optional<double> puncture_depth_mm;  // the model's depth
   };
   Normalised solve(const double* x) const;
 
   const CurveTest& test_;
-  std::vector<CurveParameter> free_;
+  int test_index_;
+  std::vector<FreeColumn> columns_;
   SolverOptions solver_;
   bool needs_puncture_;
-  bool scales_with_g_;                 // no pressure: F / G does not depend on G
-  std::vector<double> unique_depths_;  // strictly increasing
-  std::vector<std::size_t> point_to_unique_;
+  bool scales_with_g_;  // F / G does not depend on G
   mutable std::map<std::vector<double>, Normalised> cache_;
   mutable int solves_ = 0;
 };

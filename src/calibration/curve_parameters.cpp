@@ -11,12 +11,13 @@ namespace puncture {
 
 namespace {
 
-constexpr std::array<std::pair<CurveParameter, std::string_view>, 5> kTokens{{
+constexpr std::array<std::pair<CurveParameter, std::string_view>, 6> kTokens{{
     {CurveParameter::ShearModulus, "shear-modulus"},
     {CurveParameter::JLim, "jlim"},
     {CurveParameter::Friction, "friction"},
     {CurveParameter::CriticalI1, "critical-i1"},
     {CurveParameter::StickThreshold, "stick-threshold"},
+    {CurveParameter::ContactOffset, "contact-offset"},
 }};
 
 bool has_threshold(StickRule rule) {
@@ -47,6 +48,8 @@ std::string unit_of(CurveParameter parameter, const Problem& problem) {
   switch (parameter) {
     case CurveParameter::ShearModulus:
       return "MPa";
+    case CurveParameter::ContactOffset:
+      return "mm";
     case CurveParameter::StickThreshold:
       switch (problem.stick.rule) {
         case StickRule::Force:
@@ -82,6 +85,10 @@ double value_of(CurveParameter parameter, const Problem& problem) {
                          fmt::format("stick-threshold is free but the stick rule '{}' has no "
                                      "threshold (use force, depth or edge-tension)",
                                      to_string(problem.stick.rule)));
+    case CurveParameter::ContactOffset:
+      throw InvalidInput("free",
+                         "contact-offset belongs to a test's record (CurveTest::"
+                         "contact_offset_mm), not to its Problem");
   }
   return 0.0;
 }
@@ -104,6 +111,8 @@ void set_value(CurveParameter parameter, Problem& problem, double value) {
     case CurveParameter::StickThreshold:
       problem.stick.threshold = value;
       break;
+    case CurveParameter::ContactOffset:
+      break;  // value_of threw
   }
 }
 
@@ -120,6 +129,8 @@ ParameterBounds default_bounds(CurveParameter parameter, const Problem& problem)
       return {parameter, 3.0 + 1e-9, 1e4};
     case CurveParameter::StickThreshold:
       return {parameter, 1e-12, 1e6};
+    case CurveParameter::ContactOffset:
+      return {parameter, -1e3, 1e3};
   }
   return {parameter, 0.0, 0.0};
 }

@@ -49,10 +49,35 @@ puncture_cli_bad_input(fit_curve_bad_bound "--bound: expected NAME:LO:HI"
   fit curve ${dir}/indentation_record.csv --free jlim --bound jlim:500:50)
 puncture_cli_bad_input(fit_curve_no_files "give the CSV records"
   fit curve --free jlim)
-puncture_cli_bad_input(fit_curve_stick_threshold_refused
-  "--free: stick-threshold cannot be fitted by gradients yet"
-  fit curve ${dir}/indentation_record.csv --free stick-threshold --stick force:0.3
-  --contact-depth 2)
+puncture_cli_test(fit_curve_stick_threshold_alone
+  STDOUT "  stick-threshold +0\\.[23][0-9]* N  95 % interval \\[0\\.2[0-9]*, 0\\.3[0-9]*\\] from the profile"
+  ARGS fit curve ${dir}/indentation_record_stick.csv --free stick-threshold --stick force:0.25
+       --contact-depth 2)
+puncture_cli_bad_input(fit_curve_stick_threshold_without_threshold_rule
+  "--free: test .*indentation_record.csv: stick-threshold is free but the stick rule 'none' has no threshold"
+  fit curve ${dir}/indentation_record.csv --free shear-modulus,stick-threshold --contact-depth 2)
+# A record with a switch (the default membrane held until 0.3 N, indentation_record_stick.csv):
+# the threshold from the profile, its interval holding 0.3 N.
+puncture_cli_test(fit_curve_stick_threshold
+  STDOUT "  stick-threshold +0\\.[23][0-9]* N  95 % interval \\[0\\.2[0-9]*, 0\\.3[0-9]*\\] from the profile"
+  STDOUT2 "the switch lies between the measured depths 1[67]\\.[0-9]* and 1[67]\\.[0-9]* mm"
+  ARGS fit curve ${dir}/indentation_record_stick.csv --free shear-modulus,stick-threshold
+       --stick force:0.25 --contact-depth 2)
+# Each record's contact offset: the found contact of indentation_record.csv is 3.17 mm late
+# (the true contact at 2 mm).
+puncture_cli_test(fit_curve_contact_offset
+  STDOUT "  offset 1 +-3\\.[0-9]* \\+- ${number} mm  95 % interval \\[-${number}, -${number}\\] \\(test .*indentation_record.csv\\)"
+  ARGS fit curve ${dir}/indentation_record.csv --free shear-modulus,jlim,contact-offset)
+puncture_cli_test(fit_curve_contact_offset_json
+  JSON_KEYS "fit.free.1.value fit.free.1.test fit.free.0.interval"
+  ARGS fit curve ${dir}/indentation_record.csv --free shear-modulus,contact-offset
+       --format json)
+puncture_cli_bad_input(fit_curve_column_position_missing
+  "indentation_record.csv:2: the force column 5 does not exist: the line has 3 fields"
+  fit curve ${dir}/indentation_record.csv --free jlim --force-column 5)
+puncture_cli_bad_input(fit_curve_short_row
+  "indentation_short_row.csv:4: column 2 \\(force_n\\) is missing: the line has 1 field"
+  fit curve ${dir}/indentation_short_row.csv --free jlim --contact-depth 0)
 puncture_cli_test(fit_curve_huber
   STDOUT "  shear-modulus +0.0[56][0-9]* \\+- ${number} MPa"
   ARGS fit curve ${dir}/indentation_record.csv --free shear-modulus --contact-depth 2

@@ -30,16 +30,34 @@ Table points_table(const CurveFitReport& r) {
   return t;
 }
 
+// A parameter's label: its name, or for a test's own (the contact offset) "offset N".
+std::vector<std::string> labels(const CurveFit& f) {
+  std::vector<std::string> out;
+  int own = 0;
+  for (const auto& p : f.parameters)
+    out.push_back(p.test.empty() ? p.name : fmt::format("offset {}", ++own));
+  return out;
+}
+
 std::string parameter_text(const FittedCurveParameter& p) {
   const std::string unit = p.unit.empty() ? "" : " " + p.unit;
-  if (!p.standard_error) return num(p.value, p.name) + unit + " (no standard error)";
-  return fmt::format("{} +- {}{}  95 % interval [{}, {}]{}",
+  const std::string of_test = p.test.empty() ? "" : fmt::format(" (test {})", p.test);
+  if (p.profile_interval && p.ci_lower && p.ci_upper)
+    return fmt::format("{}{}  95 % interval [{}, {}] from the profile{}",
+                       num(p.value, p.name),
+                       unit,
+                       num(*p.ci_lower, p.name + " interval"),
+                       num(*p.ci_upper, p.name + " interval"),
+                       p.on_bound ? "  (on its bound)" : "");
+  if (!p.standard_error) return num(p.value, p.name) + unit + " (no standard error)" + of_test;
+  return fmt::format("{} +- {}{}  95 % interval [{}, {}]{}{}",
                      num(p.value, p.name),
                      num(*p.standard_error, p.name + " standard error"),
                      unit,
                      num_or(p.ci_lower, p.name + " interval"),
                      num_or(p.ci_upper, p.name + " interval"),
-                     p.on_bound ? "  (on its bound)" : "");
+                     p.on_bound ? "  (on its bound)" : "",
+                     of_test);
 }
 
 std::string summary(const CurveFitReport& r) {
@@ -73,17 +91,19 @@ std::string summary(const CurveFitReport& r) {
       "Least-squares fit of the force at the measured depths (Ceres Levenberg-Marquardt;\n"
       "standard errors from the covariance (J^T J)^-1 of the residuals over their sd, the\n"
       "curves' sd being the residual sd; intervals: estimate +- t(0.975, n - p) se)\n";
-  for (const auto& p : f.parameters) {
-    line(out, p.name, parameter_text(p));
+  const auto label = labels(f);
+  for (std::size_t i = 0; i < f.parameters.size(); ++i) {
+    const auto& p = f.parameters[i];
+    line(out, label[i], parameter_text(p));
     if (!p.note.empty()) line(out, "", p.note);
   }
   if (!f.correlation.empty() && f.parameters.size() > 1) {
     std::string header = "correlation";
     out += fmt::format("  {:<22}", header);
-    for (const auto& p : f.parameters) out += fmt::format(" {:>14}", p.name);
+    for (const auto& l : label) out += fmt::format(" {:>14}", l);
     out += "\n";
     for (std::size_t i = 0; i < f.parameters.size(); ++i) {
-      out += fmt::format("  {:<22}", f.parameters[i].name);
+      out += fmt::format("  {:<22}", label[i]);
       for (std::size_t j = 0; j < f.parameters.size(); ++j)
         out += fmt::format(" {:>14.4f}", finite(f.correlation[i][j], "correlation"));
       out += "\n";
@@ -123,6 +143,8 @@ json json_text_value(const CurveFitReport& r) {
   for (const auto& p : f.parameters)
     parameters.push_back({{"name", p.name},
                           {"unit", p.unit},
+                          {"test", p.test.empty() ? json(nullptr) : json(p.test)},
+                          {"interval", p.profile_interval ? "profile" : "t"},
                           {"value", finite(p.value, p.name)},
                           {"standard_error", value_or_null(p.standard_error, p.name)},
                           {"ci95_lower", value_or_null(p.ci_lower, p.name)},
