@@ -189,7 +189,7 @@ void append_energy_release_errors(std::vector<ValidationError>& errors, const Pr
         {"preload.prestretch",
          fmt::format("pre-stretch {:g}: cutting the flat membrane at the indenter's "
                      "edge releases {:.6g} mJ before it is loaded, at or above the "
-                     "{:.6g} mJ the {} costs: the membrane would fail as it is mounted",
+                     "{:.6g} mJ the cut costs ({}): the membrane would fail as it is mounted",
                      l0,
                      released,
                      cost,
