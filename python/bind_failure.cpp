@@ -1,11 +1,13 @@
 // The failure criteria (include/puncture/failure_criteria.hpp, failure.hpp, critical_value.hpp):
-// CriticalFirstInvariant, MaxPrincipalStretch, CriticalEnergyDensity, CriticalTrueStress, their
-// names, measures and assessment, and their critical values from inflation tests.
+// CriticalFirstInvariant, MaxPrincipalStretch, CriticalEnergyDensity, CriticalTrueStress,
+// CriticalEnergyRelease, their names, measures and assessment, the energy release's balance
+// (energy_release.hpp), and the critical values from inflation tests.
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "puncture/critical_value.hpp"
+#include "puncture/energy_release.hpp"
 #include "puncture/failure.hpp"
 
 namespace puncture::python {
@@ -60,6 +62,50 @@ void bind_failure(py::module_& m) {
       "Puncture where the largest principal Cauchy stress lambda_i s_i reaches critical_mpa "
       "[MPa] (CLI true-stress:<MPa>)");
 
+  bind_criterion<CriticalEnergyRelease>(
+      m,
+      "CriticalEnergyRelease",
+      "tearing_energy_n_per_mm",
+      &CriticalEnergyRelease::tearing_energy_n_per_mm,
+      "Puncture when cutting the membrane along the corner's ring releases, at the same depth, "
+      "the tearing energy Gamma 2 pi R_c H; Gamma [N/mm = kJ/m^2] > 0 (frictionless flat punch "
+      "only; CLI energy-release:<N/mm>)");
+
+  py::class_<EnergyRelease>(
+      m, "EnergyRelease", "The energy-release criterion's balance on a state [mJ = N mm]")
+      .def_readonly("stored_energy_mj",
+                    &EnergyRelease::stored_energy_mj,
+                    "U: the intact membrane's elastic energy (pre-stretch included)")
+      .def_readonly("punctured_energy_mj",
+                    &EnergyRelease::punctured_energy_mj,
+                    "the cut membrane's elastic energy at the same depth")
+      .def_readonly("cut_energy_mj", &EnergyRelease::cut_energy_mj, "Gamma 2 pi R_c H")
+      .def_readonly("cut_reference_radius_mm", &EnergyRelease::cut_reference_radius_mm, "R_c")
+      .def_readonly("collar_reference_radius_mm",
+                    &EnergyRelease::collar_reference_radius_mm,
+                    "R_j: the rings from R_c to it wrap the rod, meridionally slack")
+      .def_readonly("hole_radius_mm", &EnergyRelease::hole_radius_mm)
+      .def_property_readonly("released_energy_mj", &EnergyRelease::released_energy_mj)
+      .def_property_readonly("ratio", &EnergyRelease::ratio, "released / cut_energy_mj")
+      .def("__repr__", [](const EnergyRelease& b) {
+        return fmt::format(
+            "<EnergyRelease released={:.6g} mJ cost={:.6g} mJ ratio={:.6g} at R_c={:.6g} mm>",
+            b.released_energy_mj(),
+            b.cut_energy_mj,
+            b.ratio(),
+            b.cut_reference_radius_mm);
+      });
+  m.def(
+      "energy_release",
+      [](const Problem& problem, const Equilibrium& state, double tearing_energy_n_per_mm) {
+        return raising_value_error(
+            [&] { return energy_release(problem, state, tearing_energy_n_per_mm); });
+      },
+      py::arg("problem"),
+      py::arg("state"),
+      py::arg("tearing_energy_n_per_mm"),
+      "The energy-release balance on a state of a frictionless flat punch (EnergyRelease)");
+
   py::class_<FailureAssessment>(m, "FailureAssessment", "A criterion evaluated along a state")
       .def_readonly("value", &FailureAssessment::value, "the measure where it is largest")
       .def_readonly("critical", &FailureAssessment::critical, "its critical value")
@@ -98,19 +144,34 @@ void bind_failure(py::module_& m) {
         &failure_criteria,
         py::arg("problem"),
         "Problem.criteria, or the critical I1 of Problem.critical_i1 alone when empty");
-  m.def("measure_at",
-        &measure_at,
-        py::arg("criterion"),
-        py::arg("material"),
-        py::arg("lambda1"),
-        py::arg("lambda2"),
-        "The criterion's measure at the principal stretches (MPa for W, sigma)");
-  m.def("assess",
-        &assess,
-        py::arg("criterion"),
-        py::arg("state"),
-        py::arg("material"),
-        "The criterion's measure where it is largest in an Equilibrium (FailureAssessment)");
+  m.def(
+      "measure_at",
+      [](const FailureCriterion& c, const Material& material, double l1, double l2) {
+        return raising_value_error([&] { return measure_at(c, material, l1, l2); });
+      },
+      py::arg("criterion"),
+      py::arg("material"),
+      py::arg("lambda1"),
+      py::arg("lambda2"),
+      "The criterion's measure at the principal stretches (MPa for W, sigma)");
+  m.def(
+      "assess",
+      [](const FailureCriterion& c, const Equilibrium& state, const Problem& problem) {
+        return raising_value_error([&] { return assess(c, state, problem); });
+      },
+      py::arg("criterion"),
+      py::arg("state"),
+      py::arg("problem"),
+      "Any criterion on a state of `problem` (FailureAssessment; the energy release needs it)");
+  m.def(
+      "assess",
+      [](const FailureCriterion& c, const Equilibrium& state, const Material& material) {
+        return raising_value_error([&] { return assess(c, state, material); });
+      },
+      py::arg("criterion"),
+      py::arg("state"),
+      py::arg("material"),
+      "The criterion's measure where it is largest in an Equilibrium (FailureAssessment)");
 
   py::class_<CriticalValueEstimate, Outcome>(
       m, "CriticalValueEstimate", "A criterion's critical value from inflation tests")

@@ -524,8 +524,8 @@ void bind_problem(py::module_& m) {
       .def_readwrite("criteria",
                      &Problem::criteria,
                      "failure criteria (CriticalFirstInvariant, MaxPrincipalStretch,\n"
-                     "CriticalEnergyDensity, CriticalTrueStress); empty: critical_i1 alone,\n"
-                     "else the first met governs")
+                     "CriticalEnergyDensity, CriticalTrueStress, CriticalEnergyRelease);\n"
+                     "empty: critical_i1 alone, else the first met governs")
       .def_property(
           "stick",
           [](Problem& p) -> StickCriterion& { return p.stick; },

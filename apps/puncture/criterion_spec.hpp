@@ -10,7 +10,8 @@ namespace puncture::cli {
 
 // The accepted forms, for help and error messages.
 inline constexpr std::string_view kCriterionForms =
-    "i1:<I1>, max-stretch:<stretch>, energy-density:<MPa> or true-stress:<MPa>";
+    "i1:<I1>, max-stretch:<stretch>, energy-density:<MPa>, true-stress:<MPa> or "
+    "energy-release:<N/mm>";
 
 // Parses each NAME:VALUE (a list may hold several, from repeated flags or commas).  Appends a
 // message naming --criterion to `errors` for a malformed item or an unknown name; the values'

@@ -9,12 +9,14 @@ namespace puncture::cli {
 
 std::string csv_text(const CurveReport& report) { return csv(curve_table(report.curve.points)); }
 
-// With --criterion, each criterion's measure on every row (column <name>, or <name>_mpa), the
-// criterion's ratio to its critical value a column further.
+// With --criterion, each local criterion's measure on every row (column <name>, or <name>_mpa),
+// the criterion's ratio to its critical value a column further (the energy release, one balance
+// over the whole membrane, is in the summary and JSON).
 std::string csv_text(const StateReport& report) {
   Table t = state_fields_table(report.state);
   const auto& f = report.state.fields;
   for (const FailureCriterion& c : report.problem.criteria) {
+    if (!has_local_measure(c)) continue;
     const std::string unit = criterion_unit(c).empty() ? "" : "_mpa";
     std::string column = criterion_name(c);
     std::replace(column.begin(), column.end(), '-', '_');

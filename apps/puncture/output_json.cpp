@@ -3,6 +3,7 @@
 #include "finite.hpp"
 #include "json_helpers.hpp"
 #include "output.hpp"
+#include "puncture/energy_release.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/failure.hpp"
 #include "puncture/material.hpp"
@@ -26,20 +27,37 @@ json puncture_json(const PuncturePrediction& p, const Problem& problem) {
   return out;
 }
 
-// Each of the problem's --criterion on the state: measure where largest, place, ratio.
+// The energy-release criterion's balance [mJ].
+json energy_release_json(const EnergyRelease& b) {
+  return {{"stored_energy_mj", finite(b.stored_energy_mj, "stored energy")},
+          {"cut_membrane_energy_mj", finite(b.punctured_energy_mj, "cut membrane's energy")},
+          {"released_energy_mj", finite(b.released_energy_mj(), "released energy")},
+          {"cut_energy_mj", finite(b.cut_energy_mj, "cut's tearing energy")},
+          {"ratio", finite(b.ratio(), "released over cost")},
+          {"cut_reference_radius_mm", finite(b.cut_reference_radius_mm, "cut's R")},
+          {"collar_reference_radius_mm", finite(b.collar_reference_radius_mm, "collar's end R")},
+          {"hole_radius_mm", finite(b.hole_radius_mm, "hole's radius")}};
+}
+
+// Each of the problem's --criterion on the state: measure where largest, place, ratio (and the
+// energy release's balance).
 json criteria_json(const Equilibrium& e, const Problem& p) {
   json out = json::array();
   for (const FailureCriterion& c : p.criteria) {
-    const FailureAssessment a = assess(c, e, p.material);
-    out.push_back({{"name", criterion_name(c)},
-                   {"measure", measure_name(c)},
-                   {"unit", criterion_unit(c)},
-                   {"value", finite(a.value, "criterion measure")},
-                   {"critical", finite(a.critical, "critical value")},
-                   {"ratio", finite(a.ratio(), "ratio to the critical value")},
-                   {"part", static_cast<int>(a.part)},
-                   {"reference_radius_mm", finite(a.reference_radius_mm, "criterion's R")},
-                   {"radius_mm", finite(a.radius_mm, "criterion's r")}});
+    const FailureAssessment a = assess(c, e, p);
+    json item = {{"name", criterion_name(c)},
+                 {"measure", measure_name(c)},
+                 {"unit", criterion_unit(c)},
+                 {"value", finite(a.value, "criterion measure")},
+                 {"critical", finite(a.critical, "critical value")},
+                 {"ratio", finite(a.ratio(), "ratio to the critical value")},
+                 {"part", static_cast<int>(a.part)},
+                 {"reference_radius_mm", finite(a.reference_radius_mm, "criterion's R")},
+                 {"radius_mm", finite(a.radius_mm, "criterion's r")}};
+    if (const auto* energy = std::get_if<CriticalEnergyRelease>(&c))
+      item["energy_release"] =
+          energy_release_json(energy_release(p, e, energy->tearing_energy_n_per_mm));
+    out.push_back(item);
   }
   return out;
 }

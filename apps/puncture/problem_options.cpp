@@ -332,6 +332,11 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                  "                    [MPa = MJ/m^3] (> 0)\n"
                  "  true-stress:<MPa> largest principal Cauchy stress lambda_i s_i\n"
                  "                    [MPa] (> 0)\n"
+                 "  energy-release:<N/mm>\n"
+                 "                    tearing energy Gamma [N/mm = kJ/m^2] (> 0): cut\n"
+                 "                    along the corner's ring when the energy released,\n"
+                 "                    at the same depth, reaches Gamma 2 pi R_c H\n"
+                 "                    (Steigmann 2005; flat punch, --friction 0 only)\n"
                  "Each must be reachable below the law's locking limit.  Default: the\n"
                  "critical I1 of --critical-i1, e.g. --criterion i1:95.2,max-stretch:6")
       ->delimiter(',')

@@ -19,24 +19,30 @@ std::vector<FailureCriterion> failure_criteria(const Problem& problem);
 FailureCriterion failure_criterion(const Problem& problem);
 
 // E.g. "critical I1 = 95.2", "maximum principal stretch = 6", "critical strain-energy density
-// = 12.5 MPa", "critical true stress = 30 MPa".
+// = 12.5 MPa", "critical true stress = 30 MPa", "tearing energy = 2 N/mm".
 std::string describe(const FailureCriterion& criterion);
 // The name the CLI (--criterion NAME:VALUE) and Python use: "i1", "max-stretch",
-// "energy-density", "true-stress".
+// "energy-density", "true-stress", "energy-release".
 std::string criterion_name(const FailureCriterion& criterion);
 // The criterion called `name` with critical value `value` (its unit: criterion_unit).  Throws
 // InvalidInput ("criterion") for an unknown name; the value's range is validation_errors()'s.
 FailureCriterion criterion_from_name(const std::string& name, double value);
 // The names, in that order.
 std::vector<std::string> criterion_names();
-// What the measure is ("I1", "largest principal stretch", ...) and its unit ("" or "MPa").
+// What the measure is ("I1", "largest principal stretch", ...) and its unit ("", "MPa" or
+// "N/mm").
 std::string measure_name(const FailureCriterion& criterion);
 std::string criterion_unit(const FailureCriterion& criterion);
 double critical_value(const FailureCriterion& criterion);
 
+// Whether the criterion is a local measure of the stretches (all but the energy release, a
+// balance over the whole membrane, which has no measure_at).
+bool has_local_measure(const FailureCriterion& criterion);
+
 // The criterion's measure at principal stretches lambda1, lambda2 (lambda3 = 1 / (lambda1
 // lambda2)) of `material`: I1, max(lambda1, lambda2, lambda3), W [MPa] or max(lambda_i s_i)
-// [MPa] (i = 1, 2; the thickness direction is free of stress).
+// [MPa] (i = 1, 2; the thickness direction is free of stress).  Throws InvalidInput
+// ("criterion") for the energy release, which has no local measure.
 double measure_at(const FailureCriterion& criterion, const Material& material, double l1,
                   double l2);
 
@@ -56,10 +62,17 @@ struct FailureAssessment {
 };
 
 // The critical I1 reads the state's largest I1 (found between the integration steps); every
-// other criterion reads the fields (state.fields, sampled at SolverOptions::field_points per
-// part: the largest sampled value; NaN without fields).
+// other local criterion reads the fields (state.fields, sampled at SolverOptions::field_points
+// per part: the largest sampled value; NaN without fields).  Throws InvalidInput ("criterion")
+// for the energy release, which needs the problem (the overload below).
 FailureAssessment assess(const FailureCriterion& criterion, const Equilibrium& state,
                          const Material& material);
+// Any criterion on a state of `problem`.  The energy release (energy_release.hpp): value the
+// energy released per unit reference area of the cut [N/mm], critical the tearing energy, at the
+// cut ring (Part III's edge, the corner); throws InvalidInput where the criterion does not apply
+// (validation_errors) or the state has no fields.
+FailureAssessment assess(const FailureCriterion& criterion, const Equilibrium& state,
+                         const Problem& problem);
 // The largest value of the criterion's measure over the rows of `fields`, and its row (the
 // outermost among equal values); value NaN for empty fields.
 FailureAssessment assess_fields(const FailureCriterion& criterion, const MembraneFields& fields,

@@ -1,7 +1,8 @@
 #pragma once
-// The failure criteria a problem may carry (docs/model.md, "Failure criteria"): each a critical
-// value of a local measure of the deformation, evaluated where that measure is largest.  The
-// functions on them are in failure.hpp; the Problem holds a list of them.
+// The failure criteria a problem may carry (docs/model.md, "Failure criteria"): a critical value
+// of a local measure of the deformation, evaluated where that measure is largest, or the global
+// energy balance of cutting the membrane (CriticalEnergyRelease).  The functions on them are in
+// failure.hpp; the Problem holds a list of them.
 #include <variant>
 
 namespace puncture {
@@ -31,7 +32,18 @@ struct CriticalTrueStress {
   double critical_mpa = 0.0;
 };
 
-using FailureCriterion = std::variant<CriticalFirstInvariant, MaxPrincipalStretch,
-                                      CriticalEnergyDensity, CriticalTrueStress>;
+// The energy (Griffith-type) criterion of Steigmann (2005) and Nadler & Steigmann (2006), in
+// the rigorous frictionless form of docs/model.md §18: at the current depth, the membrane cut
+// through its thickness along the ring of material at the flat punch's corner (reference radius
+// R_c) would store less energy, by at least the tearing energy of the cut, Gamma 2 pi R_c H.
+// Gamma is the tearing energy per unit reference area of the cut [N/mm = kJ/m^2], > 0.  Only for
+// a frictionless flat punch without pressure (energy_release.hpp gives the balance).
+struct CriticalEnergyRelease {
+  double tearing_energy_n_per_mm = 0.0;
+};
+
+using FailureCriterion =
+    std::variant<CriticalFirstInvariant, MaxPrincipalStretch, CriticalEnergyDensity,
+                 CriticalTrueStress, CriticalEnergyRelease>;
 
 }  // namespace puncture

@@ -269,9 +269,11 @@ __all__ += [
 # Failure criteria (the CLI's --criterion NAME:VALUE) and their critical values from bursts.
 from ._puncture import (  # noqa: E402
     CriticalEnergyDensity,
+    CriticalEnergyRelease,
     CriticalFirstInvariant,
     CriticalTrueStress,
     CriticalValueEstimate,
+    EnergyRelease,
     FailureAssessment,
     MaxPrincipalStretch,
     assess,
@@ -280,15 +282,18 @@ from ._puncture import (  # noqa: E402
     criterion_names,
     critical_value_from_inflation,
     describe_criterion,
+    energy_release,
     failure_criteria,
     measure_at,
 )
 
 __all__ += [
     "CriticalEnergyDensity",
+    "CriticalEnergyRelease",
     "CriticalFirstInvariant",
     "CriticalTrueStress",
     "CriticalValueEstimate",
+    "EnergyRelease",
     "FailureAssessment",
     "MaxPrincipalStretch",
     "assess",
@@ -297,6 +302,7 @@ __all__ += [
     "criterion_names",
     "critical_value_from_inflation",
     "describe_criterion",
+    "energy_release",
     "failure_criteria",
     "measure_at",
 ]

@@ -8,7 +8,8 @@ import puncture as pu
 
 
 def test_names_round_trip_and_unknown_names_raise():
-    assert pu.criterion_names() == ["i1", "max-stretch", "energy-density", "true-stress"]
+    assert pu.criterion_names() == [
+        "i1", "max-stretch", "energy-density", "true-stress", "energy-release"]
     for name in pu.criterion_names():
         assert pu.criterion_name(pu.criterion_from_name(name, 7.0)) == name
     assert pu.criterion_from_name("max-stretch", 6.0).critical_stretch == 6.0
@@ -45,6 +46,22 @@ def test_bad_criteria_raise_value_error_naming_the_attribute():
         pu.predict_puncture(pu.Problem(criteria=[pu.MaxPrincipalStretch(1.0)]))
     with pytest.raises(ValueError, match="criteria"):
         pu.predict_puncture(pu.Problem(criteria=[pu.CriticalEnergyDensity(-1.0)]))
+
+
+def test_energy_release_on_the_frictionless_flat_punch():
+    problem = pu.Problem(friction=0.0, criteria=[pu.CriticalEnergyRelease(1.0)])
+    punct = pu.predict_puncture(problem)
+    assert punct.ok and punct.criterion == "tearing energy = 1 N/mm"
+    balance = pu.energy_release(problem, punct.state, 1.0)
+    assert balance.ratio == pytest.approx(1.0, abs=1e-8)
+    assert balance.released_energy_mj == pytest.approx(balance.cut_energy_mj, rel=1e-8)
+    assert pu.assess(problem.criteria[0], punct.state, problem).ratio == pytest.approx(
+        1.0, abs=1e-8)
+    with pytest.raises(ValueError, match="no local measure"):
+        pu.measure_at(pu.CriticalEnergyRelease(1.0), pu.Material(), 2.0, 2.0)
+    # The default contact is lubricated (friction 0.18): refused, friction dissipates.
+    with pytest.raises(ValueError, match="friction dissipates"):
+        pu.predict_puncture(pu.Problem(criteria=[pu.CriticalEnergyRelease(1.0)]))
 
 
 def test_critical_values_from_the_papers_bursts():

@@ -18,9 +18,10 @@ inline double excess(const FailureCriterion& criterion, const ScaledSolution& so
 }
 
 // The excess of the flat, unloaded membrane (the searches start there): the measure at
-// lambda1 = lambda2 = 1 (I1 = 3, stretch 1, W = 0, stress 0) minus the critical value.
+// lambda1 = lambda2 = 1 (I1 = 3, stretch 1, W = 0, stress 0, no energy released) minus the
+// critical value (a pre-stretched membrane that releases energy unloaded is refused if it fails).
 inline double unloaded_excess(const FailureCriterion& criterion) {
-  static constexpr double kUnloaded[] = {3.0, 1.0, 0.0, 0.0};
+  static constexpr double kUnloaded[] = {3.0, 1.0, 0.0, 0.0, 0.0};
   return kUnloaded[criterion.index()] - critical_value(criterion);
 }
 

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "failure/energy_release_balance.hpp"
+#include "puncture/energy_release.hpp"
+
 namespace puncture {
 
 namespace {
@@ -43,6 +46,9 @@ std::string describe(const FailureCriterion& criterion) {
           [](const CriticalTrueStress& c) {
             return fmt::format("critical true stress = {:g} MPa", c.critical_mpa);
           },
+          [](const CriticalEnergyRelease& c) {
+            return fmt::format("tearing energy = {:g} N/mm", c.tearing_energy_n_per_mm);
+          },
       },
       criterion);
 }
@@ -52,7 +58,7 @@ std::string criterion_name(const FailureCriterion& criterion) {
 }
 
 std::vector<std::string> criterion_names() {
-  return {"i1", "max-stretch", "energy-density", "true-stress"};
+  return {"i1", "max-stretch", "energy-density", "true-stress", "energy-release"};
 }
 
 FailureCriterion criterion_from_name(const std::string& name, double value) {
@@ -60,20 +66,29 @@ FailureCriterion criterion_from_name(const std::string& name, double value) {
   if (name == "max-stretch") return MaxPrincipalStretch{value};
   if (name == "energy-density") return CriticalEnergyDensity{value};
   if (name == "true-stress") return CriticalTrueStress{value};
+  if (name == "energy-release") return CriticalEnergyRelease{value};
   throw InvalidInput("criterion",
                      fmt::format("unknown failure criterion '{}' (one of i1, max-stretch, "
-                                 "energy-density, true-stress)",
+                                 "energy-density, true-stress, energy-release)",
                                  name));
 }
 
 std::string measure_name(const FailureCriterion& criterion) {
-  static const char* const names[] = {
-      "I1", "largest principal stretch", "strain-energy density", "largest principal true stress"};
+  static const char* const names[] = {"I1",
+                                      "largest principal stretch",
+                                      "strain-energy density",
+                                      "largest principal true stress",
+                                      "energy released per unit area of the cut"};
   return names[criterion.index()];
 }
 
 std::string criterion_unit(const FailureCriterion& criterion) {
-  return criterion.index() >= 2 ? "MPa" : "";
+  static const char* const units[] = {"", "", "MPa", "MPa", "N/mm"};
+  return units[criterion.index()];
+}
+
+bool has_local_measure(const FailureCriterion& criterion) {
+  return !std::holds_alternative<CriticalEnergyRelease>(criterion);
 }
 
 double critical_value(const FailureCriterion& criterion) {
@@ -82,6 +97,7 @@ double critical_value(const FailureCriterion& criterion) {
                         [](const MaxPrincipalStretch& c) { return c.critical_stretch; },
                         [](const CriticalEnergyDensity& c) { return c.critical_mpa; },
                         [](const CriticalTrueStress& c) { return c.critical_mpa; },
+                        [](const CriticalEnergyRelease& c) { return c.tearing_energy_n_per_mm; },
                     },
                     criterion);
 }
@@ -103,6 +119,11 @@ double measure_at(const FailureCriterion& criterion, const Material& material, d
                           // s2).
                           const MembraneStress st = membrane_stress(material.law, l1, l2);
                           return g * std::max(l1 * st.s1, l2 * st.s2);
+                        },
+                        [&](const CriticalEnergyRelease&) -> double {
+                          throw InvalidInput("criterion",
+                                             "the energy-release criterion is a balance over the "
+                                             "whole membrane: it has no local measure");
                         },
                     },
                     criterion);
@@ -141,7 +162,19 @@ FailureAssessment assess_fields(const FailureCriterion& criterion, const Membran
 }
 
 FailureAssessment assess(const FailureCriterion& criterion, const Equilibrium& state,
+                         const Problem& problem) {
+  const auto* energy = std::get_if<CriticalEnergyRelease>(&criterion);
+  if (!energy) return assess(criterion, state, problem.material);
+  return detail::energy_release_assessment(
+      problem, energy_release(problem, state, energy->tearing_energy_n_per_mm), *energy);
+}
+
+FailureAssessment assess(const FailureCriterion& criterion, const Equilibrium& state,
                          const Material& material) {
+  if (!has_local_measure(criterion))
+    throw InvalidInput("criterion",
+                       "the energy-release criterion is assessed on the problem (assess(criterion, "
+                       "state, problem)): it needs the membrane's geometry");
   if (const auto* c = std::get_if<CriticalFirstInvariant>(&criterion))
     return FailureAssessment{state.max_first_invariant,
                              c->critical_i1,

@@ -1,9 +1,11 @@
 #pragma once
 // The failure criteria on a normalised solution, as the puncture search and the states use them.
 // The critical I1 reads the largest I1 the shooting found between its steps; every other
-// criterion reads the sampled fields (state_fields.hpp), so that a state's assessment
-// (puncture::assess on its Equilibrium) and the search's agree to the last bit.
+// criterion reads the sampled fields (state_fields.hpp; the energy release integrates the energy
+// over them), so that a state's assessment (puncture::assess on its Equilibrium) and the
+// search's agree to the last bit.
 #include "failure/criterion.hpp"
+#include "failure/energy_release_balance.hpp"
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/state_fields.hpp"
 #include "puncture/failure.hpp"
@@ -27,6 +29,11 @@ FailureAssessment assess_scaled(const Problem& p, const Contact& contact,
   }
   MembraneFields fields;
   append_state_fields(p, contact, sol, fields);
+  if (const auto* energy = std::get_if<CriticalEnergyRelease>(&criterion))
+    return energy_release_assessment(
+        p,
+        energy_release_of(p, fields, sol.part_three_stretch, energy->tearing_energy_n_per_mm),
+        *energy);
   return assess_fields(criterion, fields, p.material);
 }
 

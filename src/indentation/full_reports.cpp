@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "indentation/face_slip.hpp"
+#include "puncture/energy_release.hpp"
 #include "puncture/failure.hpp"
 #include "puncture/inflation.hpp"
 #include "puncture/reports.hpp"
@@ -67,7 +68,22 @@ std::string criteria_text(const Problem& p) {
 // its critical value.
 void criteria_lines(std::string& out, const Equilibrium& e, const Problem& p) {
   for (const FailureCriterion& c : p.criteria) {
-    const FailureAssessment a = assess(c, e, p.material);
+    if (const auto* energy = std::get_if<CriticalEnergyRelease>(&c)) {
+      const EnergyRelease b = energy_release(p, e, energy->tearing_energy_n_per_mm);
+      // "criterion energy-release" would fill the label's column.
+      line(out,
+           "energy balance",
+           fmt::format("cut at R = {} mm releases {} mJ (intact {} mJ, cut {} mJ) against the "
+                       "{} mJ it costs: ratio {}",
+                       num(b.cut_reference_radius_mm),
+                       num(b.released_energy_mj()),
+                       num(b.stored_energy_mj),
+                       num(b.punctured_energy_mj),
+                       num(b.cut_energy_mj),
+                       num(b.ratio())));
+      continue;
+    }
+    const FailureAssessment a = assess(c, e, p);
     const std::string unit =
         criterion_unit(c).empty() ? std::string() : fmt::format(" {}", criterion_unit(c));
     line(out,

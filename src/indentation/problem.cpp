@@ -4,12 +4,16 @@
 
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
+#include <variant>
 
+#include "failure/cut_membrane.hpp"
 #include "mechanics/falling_stress.hpp"
 #include "mechanics/membrane_validation.hpp"
+#include "puncture/energy_release.hpp"
 #include "puncture/failure.hpp"
 #include "puncture/membrane_stress.hpp"
 
@@ -156,6 +160,42 @@ void append_critical_i1_errors(std::vector<ValidationError>& errors, double crit
   }
 }
 
+// The energy-release criterion: a tearing energy > 0 on a problem it applies to, not already met
+// by the pre-stretched membrane as it is mounted (cut at Part III's edge, at radius a / L0).
+void append_energy_release_errors(std::vector<ValidationError>& errors, const Problem& p,
+                                  const std::string& what, double tearing_energy) {
+  if (!std::isfinite(tearing_energy) || tearing_energy <= 0.0) {
+    errors.push_back(
+        {"criteria",
+         fmt::format(
+             "{}: tearing energy must be a finite number > 0 N/mm, got {}", what, tearing_energy)});
+    return;
+  }
+  const auto conflicts = energy_release_conflicts(p);
+  for (const std::string& c : conflicts) errors.push_back({"criteria", what + " " + c});
+  const double l0 = p.preload.prestretch, big_a = p.geometry.clamp_radius_mm,
+               h = p.geometry.thickness_mm, g = p.material.shear_modulus_mpa;
+  if (!conflicts.empty() || !errors.empty() || !(std::isfinite(l0) && l0 > 1.0)) return;
+  const double a = std::get<FlatPunch>(p.indenter).radius_mm;
+  // Normalised by A / L0 (detail::cut_membrane): the flat disc stores W(L0, L0) / 2.
+  const auto cut = detail::cut_membrane(p.material.law, a * l0 / big_a, a / big_a, l0);
+  if (!cut) return;
+  const double unit = 2.0 * std::numbers::pi * g * h * (big_a / l0) * (big_a / l0);
+  const double released =
+      unit * (0.5 * strain_energy_density(p.material.law, l0, l0) - cut->energy);
+  const double cost = tearing_energy * 2.0 * std::numbers::pi * (a / l0) * h;
+  if (released >= cost)
+    errors.push_back(
+        {"preload.prestretch",
+         fmt::format("pre-stretch {:g}: cutting the flat membrane at the indenter's "
+                     "edge releases {:.6g} mJ before it is loaded, at or above the "
+                     "{:.6g} mJ the cut costs ({}): the membrane would fail as it is mounted",
+                     l0,
+                     released,
+                     cost,
+                     what)});
+}
+
 // The criteria of Problem::criteria: each critical value in its range and reachable below the
 // law's locking limit, and not already met by the pre-stretched membrane as it is mounted.
 void append_criteria_errors(std::vector<ValidationError>& errors, const Problem& p) {
@@ -164,6 +204,10 @@ void append_criteria_errors(std::vector<ValidationError>& errors, const Problem&
   for (const FailureCriterion& c : p.criteria) {
     const double v = critical_value(c);
     const std::string what = fmt::format("{} criterion", criterion_name(c));
+    if (!has_local_measure(c)) {
+      append_energy_release_errors(errors, p, what, v);
+      continue;
+    }
     if (std::holds_alternative<CriticalFirstInvariant>(c)) {
       if (!std::isfinite(v) || v <= 3.0) {
         errors.push_back(

@@ -283,11 +283,15 @@ PuncturePrediction find_puncture_by(const Problem& p, const SolverOptions& optio
   out.part_three_stretch = sol.part_three_stretch;
   const FailureAssessment crack = assess_scaled(p, contact, criterion, sol);
   out.crack_reference_radius_mm = crack.reference_radius_mm;
-  out.crack_location =
-      std::holds_alternative<CriticalFirstInvariant>(criterion)
-          ? contact.crack_location(sol)
-          : fmt::format(
-                "where the {} is largest: {}", measure_name(criterion), to_string(crack.part));
+  if (std::holds_alternative<CriticalFirstInvariant>(criterion))
+    out.crack_location = contact.crack_location(sol);
+  else if (!has_local_measure(criterion))
+    out.crack_location = fmt::format(
+        "cut through the thickness along the ring at the corner (reference radius {:.6g} mm)",
+        crack.reference_radius_mm);
+  else
+    out.crack_location =
+        fmt::format("where the {} is largest: {}", measure_name(criterion), to_string(crack.part));
   out.at_switch = at_switch;
   if (sliding_criterion_depth_mm)
     out.crack_location = fmt::format(
