@@ -14,7 +14,8 @@ CurveModel::CurveModel(const CurveTest& test, std::vector<CurveParameter> free,
       free_(std::move(free)),
       solver_(solver),
       needs_puncture_(needs_puncture),
-      scales_with_g_(test.problem.preload.pressure_mpa == 0.0) {
+      scales_with_g_(test.problem.preload.pressure_mpa == 0.0 &&
+                     !test.problem.preload.gas_volume_mm3) {
   solver_.record_fields = false;
   // Equal depths (a machine's resolution) share one solve: the curve needs increasing depths.
   for (const double d : test.depth_mm) {
