@@ -187,7 +187,8 @@ TEST(SealedGas, FlatFaceCarriesTheCurrentPressureTimesTheContactArea) {
 // The gas stiffens the membrane: along the curve the force exceeds the held pressure's and a
 // smaller chamber's exceeds a larger one's, while the pressure rises.  (The excess over the
 // held-pressure curve need not grow everywhere: the flat punch's, V0 = 1e7 mm^3, falls from
-// 0.0110 N at 21 mm to 0.0096 N at 24 mm, as dF/dp at a fixed depth falls there.)
+// 0.0110 N at 9 mm to 0.0096 N at 12 mm, across the onset of Part II (at 11.04 mm held), where
+// the two curves' kinks lie at different depths.)
 TEST(SealedGas, ForceExceedsTheHeldPressuresAlongTheCurve) {
   for (const Problem& base : {pressurised(), flat()}) {
     SCOPED_TRACE(describe(base.indenter));
