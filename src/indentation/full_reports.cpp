@@ -44,8 +44,6 @@ std::string switch_text(const LoadingCurve& c, const Problem& p) {
 }
 
 std::string part_two_text(const LoadingCurve& c, const Problem& p) {
-  if (p.preload.gas_volume_mm3)
-    return "not located over a sealed chamber (the points' configurations show where)";
   if (!c.part_two_onset_depth_mm || !c.part_two_onset_force_n)
     return p.stick.rule == StickRule::Always ? "never (the membrane is held)" : "not found";
   const double end = c.points.empty() ? 0.0 : c.points.back().depth_mm;

@@ -152,6 +152,44 @@ Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate) {
 
 }  // namespace
 
+namespace {
+
+// Where Part II appears on a sealed curve: between the two points whose sliding configurations
+// differ, by bisection on the depth to 1e-9 of it; the onset's force is the state's with Part II
+// at the final bracket's deep end.  Right at the onset a constant-pressure solve may fail (Part
+// II of zero length): a failure once the bracket is within 1e-7 of the depth ends the bisection
+// there; earlier, the onset is left empty.
+void locate_part_two_onset(const Problem& p, const SealedChamber& c, const SolverOptions& quiet,
+                           LoadingCurve& out) {
+  for (std::size_t k = 1; k < out.points.size(); ++k) {
+    const CurvePoint &a = out.points[k - 1], &b = out.points[k];
+    if (a.configuration != Configuration::SlipWithoutPartTwo ||
+        b.configuration != Configuration::SlipWithPartTwo)
+      continue;
+    double lo = a.depth_mm, hi = b.depth_mm, pressure = a.gas->pressure_mpa, force = b.force_n;
+    while (hi - lo > 1e-9 * hi) {
+      const double mid = 0.5 * (lo + hi);
+      const Equilibrium e = sealed_at_depth(p, c, mid, Stage::Slip, quiet, pressure);
+      if (!e.ok()) {
+        if (hi - lo > 1e-7 * hi) return;
+        break;
+      }
+      if (e.configuration == Configuration::SlipWithPartTwo) {
+        hi = mid;
+        force = e.force_n;
+      } else {
+        lo = mid;
+        pressure = e.gas->pressure_mpa;
+      }
+    }
+    out.part_two_onset_depth_mm = hi;
+    out.part_two_onset_force_n = force;
+    return;
+  }
+}
+
+}  // namespace
+
 Problem at_held_pressure(const Problem& p, double pressure_mpa) {
   Problem held = p;
   held.preload.pressure_mpa = pressure_mpa;
@@ -278,6 +316,7 @@ LoadingCurve sealed_loading_curve(const Problem& p, const CurveOptions& curve,
     out.points.push_back(pt);
     if (curve.progress) curve.progress(k + 1, n);
   }
+  locate_part_two_onset(p, c, quiet, out);
   out.status = Status::Converged;
   return out;
 }

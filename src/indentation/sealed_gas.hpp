@@ -49,7 +49,8 @@ Equilibrium sealed_at_force(const Problem& p, const SealedChamber& chamber, doub
 // the message).
 PuncturePrediction sealed_puncture(const Problem& p, const SolverOptions& options);
 
-// The loading curve over the chamber, every point with its gas; Part II's onset is not located.
+// The loading curve over the chamber, every point with its gas; Part II's onset by bisection
+// between the points where it appears.
 LoadingCurve sealed_loading_curve(const Problem& p, const CurveOptions& curve,
                                   const SolverOptions& options);
 

@@ -211,6 +211,21 @@ TEST(SealedGas, ForceExceedsTheHeldPressuresAlongTheCurve) {
                          held.points[k].depth_mm),
              large.points[k].force_n - held.points[k].force_n);
     }
+    if (!std::holds_alternative<FlatPunch>(base.indenter)) continue;
+    // Part II's onset on the sealed curve: located between the points, the states just before
+    // and after it on either side, its force continuous there.
+    ASSERT_TRUE(large.part_two_onset_depth_mm && large.part_two_onset_force_n);
+    const double onset = *large.part_two_onset_depth_mm;
+    EXPECT_GT(onset, 9.0);
+    EXPECT_LE(onset, 12.0);
+    const auto before = solve_at_depth(sealed(1e7, base), onset * (1.0 - 1e-5), Stage::Slip);
+    const auto after = solve_at_depth(sealed(1e7, base), onset * (1.0 + 1e-5), Stage::Slip);
+    ASSERT_TRUE(before.ok() && after.ok()) << before.message << after.message;
+    EXPECT_EQ(before.configuration, Configuration::SlipWithoutPartTwo);
+    EXPECT_EQ(after.configuration, Configuration::SlipWithPartTwo);
+    EXPECT_NEAR(*large.part_two_onset_force_n, after.force_n, 1e-4 * after.force_n);
+    record("sealed_part_two_onset_mm", onset);
+    record("held_part_two_onset_mm", *held.part_two_onset_depth_mm);
   }
 }
 
