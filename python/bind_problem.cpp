@@ -110,10 +110,13 @@ std::string stick_repr(const StickCriterion& s) {
 }
 
 std::string preload_repr(const Preload& p) {
-  return p.pressure_mpa == 0.0
-             ? fmt::format("Preload(prestretch={:g})", p.prestretch)
-             : fmt::format(
-                   "Preload(prestretch={:g}, pressure_mpa={:g})", p.prestretch, p.pressure_mpa);
+  std::string out = fmt::format("Preload(prestretch={:g}", p.prestretch);
+  if (p.pressure_mpa != 0.0) out += fmt::format(", pressure_mpa={:g}", p.pressure_mpa);
+  if (p.gas_volume_mm3)
+    out += fmt::format(", gas_volume_mm3={:g}, atmospheric_pressure_mpa={:g}",
+                       *p.gas_volume_mm3,
+                       p.atmospheric_pressure_mpa);
+  return out + ")";
 }
 
 // By value: pybind11 2.10 cannot vectorize a function with a const reference argument.
@@ -201,11 +204,22 @@ void bind_problem(py::module_& m) {
   py::class_<Preload> preload(
       m, "Preload", "How the membrane is loaded before indentation: pre-stretch and gas pressure");
   preload
-      .def(py::init([](double prestretch, double pressure_mpa) {
-             return Preload{prestretch, pressure_mpa};
+      .def(py::init([](double prestretch,
+                       double pressure_mpa,
+                       std::optional<double>
+                           gas_volume_mm3,
+                       double atmospheric_pressure_mpa) {
+             Preload p;
+             p.prestretch = prestretch;
+             p.pressure_mpa = pressure_mpa;
+             p.gas_volume_mm3 = gas_volume_mm3;
+             p.atmospheric_pressure_mpa = atmospheric_pressure_mpa;
+             return p;
            }),
            py::arg("prestretch") = Preload{}.prestretch,
-           py::arg("pressure_mpa") = Preload{}.pressure_mpa)
+           py::arg("pressure_mpa") = Preload{}.pressure_mpa,
+           py::arg("gas_volume_mm3") = py::none(),
+           py::arg("atmospheric_pressure_mpa") = Preload{}.atmospheric_pressure_mpa)
       .def_readwrite("prestretch",
                      &Preload::prestretch,
                      "equibiaxial pre-stretch L0 (>= 1): the stress-free disc of radius A / L0 "
@@ -214,6 +228,15 @@ void bind_problem(py::module_& m) {
                      &Preload::pressure_mpa,
                      "gas pressure p under the membrane [MPa] (>= 0), held: inflated first, then "
                      "indented at its pole; depths from the inflated pole (sphere-tipped probe)")
+      .def_readwrite("gas_volume_mm3",
+                     &Preload::gas_volume_mm3,
+                     "a sealed chamber instead of a held pressure: V0, the gas volume under the "
+                     "flat membrane [mm^3] (> 0), closed at the inflated state of pressure_mpa; "
+                     "isothermal, (p + p_atm)(V0 + V) stays fixed.  None: pressure held")
+      .def_readwrite("atmospheric_pressure_mpa",
+                     &Preload::atmospheric_pressure_mpa,
+                     "atmospheric pressure p_atm [MPa] (> 0): the gauge pressures' offset in the "
+                     "sealed chamber's gas law (with gas_volume_mm3 only)")
       .def("__repr__", &preload_repr);
   copyable(preload);
 

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <limits>
+
 #include "bindings.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/loading_curve.hpp"
@@ -132,6 +134,16 @@ void bind_results(py::module_& m) {
         &MembraneFields::friction_traction_mpa,
         "friction traction in Part II [MPa], else 0");
 
+  py::class_<ChamberGas>(m, "ChamberGas", "A sealed chamber's gas in one state")
+      .def_readonly("pressure_mpa", &ChamberGas::pressure_mpa, "gauge pressure p [MPa]")
+      .def_readonly("volume_mm3",
+                    &ChamberGas::volume_mm3,
+                    "V, the volume between the membrane and its clamp plane [mm^3]")
+      .def("__repr__", [](const ChamberGas& g) {
+        return fmt::format(
+            "<ChamberGas pressure_mpa={:.6g}, volume_mm3={:.6g}>", g.pressure_mpa, g.volume_mm3);
+      });
+
   py::class_<Equilibrium, Outcome>(m, "Equilibrium", "One equilibrium state", py::dynamic_attr())
       .def_readonly("configuration", &Equilibrium::configuration)
       .def_readonly("stage", &Equilibrium::stage)
@@ -170,6 +182,10 @@ void bind_results(py::module_& m) {
       .def_readonly("clamp_residual", &Equilibrium::clamp_residual)
       .def_readonly("shooting_evaluations", &Equilibrium::shooting_evaluations)
       .def_readonly("fields", &Equilibrium::fields)
+      .def_readonly("gas",
+                    &Equilibrium::gas,
+                    "over a sealed chamber (Preload.gas_volume_mm3) its gas (ChamberGas), else "
+                    "None")
       .def("__repr__", &equilibrium_repr);
 
   py::class_<CurvePoint>(m, "CurvePoint", "One point of the loading curve")
@@ -185,6 +201,7 @@ void bind_results(py::module_& m) {
       .def_readonly("beyond_puncture",
                     &CurvePoint::beyond_puncture,
                     "True past the puncture point (the model's continuation)")
+      .def_readonly("gas", &CurvePoint::gas, "a sealed chamber's gas (ChamberGas), else None")
       .def("__repr__", [](const CurvePoint& p) {
         return fmt::format("<CurvePoint depth_mm={:.6g}, force_n={:.6g}, {}>",
                            p.depth_mm,
@@ -298,6 +315,10 @@ void bind_results(py::module_& m) {
               d[name] = self.attr(name);
             d["max_i1"] = self.attr("max_first_invariant");
             d["beyond_puncture"] = self.attr("beyond_puncture");
+            const auto& points = self.cast<const LoadingCurve&>().points;
+            if (!points.empty() && points.front().gas)  // a sealed chamber's, as the CSV
+              for (const char* name : {"gas_pressure_mpa", "gas_volume_mm3"})
+                d[name] = self.attr(name);
             return d;
           },
           "The curve as a dict named like the CLI's CSV columns (stage and configuration as "
@@ -324,6 +345,23 @@ void bind_results(py::module_& m) {
         return column<bool>(c.points, [](const CurvePoint& p) { return p.beyond_puncture; });
       },
       "bool per point: True past the puncture point (curves with max_depth_mm beyond it)");
+  curve.def_property_readonly(
+      "gas_pressure_mpa",
+      [](const LoadingCurve& c) {
+        return column<double>(c.points, [](const CurvePoint& p) {
+          return p.gas ? p.gas->pressure_mpa : std::numeric_limits<double>::quiet_NaN();
+        });
+      },
+      "a sealed chamber's gauge pressure at each point [MPa] (NaN without one)");
+  curve.def_property_readonly(
+      "gas_volume_mm3",
+      [](const LoadingCurve& c) {
+        return column<double>(c.points, [](const CurvePoint& p) {
+          return p.gas ? p.gas->volume_mm3 : std::numeric_limits<double>::quiet_NaN();
+        });
+      },
+      "the volume V between the membrane and its clamp plane at each point [mm^3] (NaN without a "
+      "sealed chamber)");
 
   py::class_<StageBoundary, Outcome>(
       m, "StageBoundary", "Where the stick criterion switches the stage", py::dynamic_attr())

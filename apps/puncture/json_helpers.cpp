@@ -92,6 +92,11 @@ json problem_json(const Problem& p, std::string_view calibrated) {
   out["part_two_equation"] = to_string(p.part_two_equation);
   if (p.preload.pressure_mpa > 0.0)
     out["pressure_mpa"] = finite(p.preload.pressure_mpa, "pressure");
+  if (const auto v0 = p.preload.gas_volume_mm3) {
+    out["gas_volume_mm3"] = finite(*v0, "gas volume");
+    out["atmospheric_pressure_mpa"] =
+        finite(p.preload.atmospheric_pressure_mpa, "atmospheric pressure");
+  }
   // The flat punch's JSON is unchanged; another shape is named.
   if (std::holds_alternative<SphereTipped>(p.indenter)) out["indenter"] = "sphere-tipped";
   return out;

@@ -98,6 +98,9 @@ json state_json(const Equilibrium& e) {
   };
   if (const auto ratio = finite_or_unbounded(e.corner_tension_ratio, "corner tension ratio"))
     out["corner_tension_ratio"] = *ratio;
+  if (e.gas)
+    out["gas"] = {{"pressure_mpa", finite(e.gas->pressure_mpa, "chamber's gas pressure")},
+                  {"volume_mm3", finite(e.gas->volume_mm3, "enclosed volume")}};
   out["fields"] = rows_json(fields_table(e.fields));
   return out;
 }
@@ -125,7 +128,8 @@ json curve_json(const CurveReport& r) {
   // A flat punch under a gas pressure with friction: the points before it are not the membrane's
   // states (its face slides inward there).
   if (std::holds_alternative<FlatPunch>(r.problem.indenter) &&
-      r.problem.preload.pressure_mpa > 0.0 && r.problem.friction > 0.0)
+      (r.problem.preload.pressure_mpa > 0.0 || r.problem.preload.gas_volume_mm3) &&
+      r.problem.friction > 0.0)
     out["face_slides_outward_from_mm"] =
         c.face_slides_outward_from_mm
             ? json(finite(*c.face_slides_outward_from_mm, "face's outward sliding depth"))

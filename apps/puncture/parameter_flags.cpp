@@ -12,12 +12,14 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 32> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 34> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"geometry.thickness_mm", "--thickness"},
     {"preload.prestretch", "--prestretch"},
     {"preload.pressure_mpa", "--pressure"},
+    {"preload.gas_volume_mm3", "--gas-volume"},
+    {"preload.atmospheric_pressure_mpa", "--atmospheric-pressure"},
     {"clamp_radius_mm", "--clamp-radius"},
     {"thickness_mm", "--thickness"},
     {"prestretch", "--prestretch"},

@@ -216,6 +216,24 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "--pressure is that command's own: the states at p.)")
           ->group(kGeometry)
           ->capture_default_str();
+  f.gas_volume_option =
+      app.add_option("--gas-volume",
+                     f.gas_volume_mm3,
+                     "Seal the gas instead of holding its pressure: V0, the chamber's volume\n"
+                     "under the flat membrane [mm^3] (> 0).  The chamber is closed at the\n"
+                     "inflated state of --pressure (gauge; 0: closed flat), and the\n"
+                     "isothermal ideal gas keeps (p + p_atm)(V0 + V) fixed, V the volume\n"
+                     "between the membrane and its clamp plane: indenting compresses it.\n"
+                     "Depths from the sealed dome's pole; outputs report p and V.")
+          ->group(kGeometry);
+  f.atmospheric_pressure_option =
+      app.add_option("--atmospheric-pressure",
+                     f.atmospheric_pressure_mpa,
+                     "Atmospheric pressure p_atm above the membrane [MPa] (> 0), with\n"
+                     "--gas-volume only: --pressure and the chamber's pressure are gauge,\n"
+                     "the gas law holds for the absolute p + p_atm")
+          ->group(kGeometry)
+          ->capture_default_str();
 
   f.shear_modulus_option = app.add_option("--shear-modulus",
                                           f.shear_modulus_mpa,
@@ -395,6 +413,11 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   p.geometry.thickness_mm = f.thickness_mm;
   p.preload.prestretch = f.prestretch;
   p.preload.pressure_mpa = f.pressure_mpa;
+  if (given(f.gas_volume_option)) p.preload.gas_volume_mm3 = f.gas_volume_mm3;
+  p.preload.atmospheric_pressure_mpa = f.atmospheric_pressure_mpa;
+  if (given(f.atmospheric_pressure_option) && !given(f.gas_volume_option))
+    errors.push_back(
+        "--atmospheric-pressure: applies to a sealed chamber only; give --gas-volume too");
   p.material = material_of(f, errors);
   p.friction = f.friction;
   p.critical_i1 = f.critical_i1;
@@ -464,6 +487,10 @@ InflationProblem make_inflation_problem(const ProblemFlags& f) {
     errors.push_back(
         "--pressure: before 'inflate' it is the gas pressure of an indentation; the inflation's "
         "states at a pressure are 'inflate --pressure P'");
+  for (const CLI::Option* o : {f.gas_volume_option, f.atmospheric_pressure_option})
+    if (given(o))
+      errors.push_back(o->get_name() +
+                       ": the sealed chamber is an indentation's; 'inflate' holds the pressure");
   p.clamp_radius_mm = f.clamp_radius_mm;
   p.thickness_mm = f.thickness_mm;
   p.material = material_of(f, errors);

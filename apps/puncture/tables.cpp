@@ -34,6 +34,15 @@ Table curve_table(const std::vector<CurvePoint>& points) {
                       p.corner_slope_rad,
                       p.max_first_invariant,
                       p.beyond_puncture ? 1 : 0});
+  // Over a sealed chamber: the gas at each depth (the other curves' columns are unchanged).
+  if (std::any_of(points.begin(), points.end(), [](const CurvePoint& p) { return p.gas; })) {
+    t.columns.insert(t.columns.end(), {"gas_pressure_mpa", "gas_volume_mm3"});
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto& gas = points[i].gas;
+      t.rows[i].push_back(gas ? std::optional<double>(gas->pressure_mpa) : std::nullopt);
+      t.rows[i].push_back(gas ? std::optional<double>(gas->volume_mm3) : std::nullopt);
+    }
+  }
   return t;
 }
 
@@ -105,6 +114,10 @@ Table puncture_table(const PuncturePrediction& p) {
                     p.crack_radius_mm,
                     p.crack_location,
                     p.energy_to_puncture_mj});
+  if (const auto& gas = p.state.gas) {
+    t.columns.insert(t.columns.end(), {"gas_pressure_mpa", "gas_volume_mm3"});
+    t.rows.front().insert(t.rows.front().end(), {gas->pressure_mpa, gas->volume_mm3});
+  }
   return t;
 }
 

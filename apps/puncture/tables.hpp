@@ -22,7 +22,8 @@ struct Table {
 };
 
 // depth_mm, force_n, normalized_force, stage, configuration, part_three_stretch,
-// part_two_length_mm, corner_slope_rad, max_i1.
+// part_two_length_mm, corner_slope_rad, max_i1, beyond_puncture; over a sealed chamber also
+// gas_pressure_mpa and gas_volume_mm3 (the gas's gauge pressure and the enclosed volume V).
 Table curve_table(const std::vector<CurvePoint>& points);
 
 // part, R_mm, r_mm, z_mm, slope_rad, lambda1, lambda2, lambda3, s1_mpa, s2_mpa, I1,
@@ -34,7 +35,7 @@ Table state_fields_table(const Equilibrium& e);
 
 // One row: force_n, normalized_force, depth_mm, stage, configuration, part_three_stretch,
 // max_i1, crack_reference_radius_mm, crack_radius_mm, crack_location, energy_to_puncture_mj
-// (empty when not computed).
+// (empty when not computed); over a sealed chamber also gas_pressure_mpa, gas_volume_mm3.
 Table puncture_table(const PuncturePrediction& puncture);
 
 // One row per check: group, quantity, condition, shooting, second_method, relative_difference,

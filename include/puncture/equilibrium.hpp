@@ -1,8 +1,10 @@
 #pragma once
 // One equilibrium state of the indented membrane, at a prescribed indenter force or depth.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "puncture/chamber_gas.hpp"
 #include "puncture/membrane_fields.hpp"
 #include "puncture/options.hpp"
 #include "puncture/outcome.hpp"
@@ -47,6 +49,8 @@ struct Equilibrium : Outcome {
   double clamp_residual = 0.0;   // |lambda2(A) - 1| reached by the shooting
   int shooting_evaluations = 0;  // integrations of Part I used
   MembraneFields fields;
+  // A sealed chamber (Preload::gas_volume_mm3): its gas in this state.  Empty otherwise.
+  std::optional<ChamberGas> gas;
 };
 
 // Equilibrium at indenter force F [N] in the given stage (the solver picks the configuration).

@@ -23,6 +23,7 @@ struct CurvePoint {
   // Deeper than the puncture point (or past the failure criterion): the real membrane has
   // punctured; the point is the model's continuation (curves with max_depth_mm).
   bool beyond_puncture = false;
+  std::optional<ChamberGas> gas;  // a sealed chamber's gas at this depth, else empty
 };
 
 // The stick -> slip switch under displacement control: at the switch depth the held state and

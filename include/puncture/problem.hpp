@@ -1,6 +1,7 @@
 #pragma once
 // What a user specifies: the membrane, the indenter, the contact and the failure criterion.
 // Inputs are in mm, N and MPa; defaults are the paper's lubricated silicone membrane.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,14 @@ struct Preload {
   // inflated by p (the first inflated state, reached by inflating slowly from flat), then
   // indented at its pole from the convex side.  Depths are measured from the inflated pole.
   double pressure_mpa = 0.0;
+  // A sealed chamber instead (docs/model.md §17.1): the volume V0 of gas under the flat membrane
+  // [mm^3] (> 0), closed at the inflated state of pressure_mpa, so that the amount of gas is
+  // fixed and its pressure follows the enclosed volume (isothermal ideal gas).  Empty: the
+  // pressure is held constant.
+  std::optional<double> gas_volume_mm3;
+  // The atmosphere above the membrane [MPa] (> 0): pressure_mpa and the chamber's pressure are
+  // gauge pressures, the gas law holds for the absolute ones.  Read with gas_volume_mm3 only.
+  double atmospheric_pressure_mpa = 0.101325;
 };
 
 // When the membrane, held at the indenter's edge at first, starts to slide over it.  Coulomb

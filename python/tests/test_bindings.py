@@ -357,6 +357,32 @@ def test_pressurised_membrane_matches_cli_and_starts_from_the_inflated_dome(cli)
         pu.solve_at_depth(pu.Problem(preload=pu.Preload(pressure_mpa=-1.0)), 1.0)
 
 
+def test_sealed_chamber_matches_cli_and_reports_its_gas(cli):
+    sealed = pu.Preload(pressure_mpa=3e-4, gas_volume_mm3=2e6)
+    assert repr(sealed) == ("Preload(prestretch=1, pressure_mpa=0.0003, gas_volume_mm3=2e+06, "
+                            "atmospheric_pressure_mpa=0.101325)")
+    problem = pu.Problem(indenter=pu.SphereTipped(2.0), friction=0.0, preload=sealed)
+    state = pu.solve_at_depth(problem, 5.0)
+    assert state.ok and state.gas.pressure_mpa > 3e-4
+    # the gas law with the state's own volume, against the contact-free state's
+    dome = pu.solve_at_depth(problem, 0.0).gas
+    assert dome.pressure_mpa == 3e-4
+    content = (3e-4 + 0.101325) * (2e6 + dome.volume_mm3)
+    assert (state.gas.pressure_mpa + 0.101325) * (2e6 + state.gas.volume_mm3) == pytest.approx(
+        content, rel=1e-11)
+    ours = cli.json("state", "--indenter", "sphere-tipped", "--friction", "0", "--pressure",
+                    "3e-4", "--gas-volume", "2e6", "--depth", "5")
+    assert ours["inputs"]["gas_volume_mm3"] == 2e6
+    assert ours["state"]["gas"]["pressure_mpa"] == pytest.approx(state.gas.pressure_mpa, rel=1e-12)
+    assert state.force_n == pytest.approx(ours["state"]["force_n"], rel=1e-12)
+    curve = pu.loading_curve(problem, points=3, max_depth_mm=5.0)
+    assert curve.ok and np.all(np.diff(curve.gas_pressure_mpa) > 0)
+    assert set(curve.columns()) >= {"gas_pressure_mpa", "gas_volume_mm3"}
+    assert pu.solve_at_depth(pu.Problem(), 1.0).gas is None
+    with pytest.raises(ValueError, match="gas volume must be a finite number > 0"):
+        pu.solve_at_depth(pu.Problem(preload=pu.Preload(gas_volume_mm3=0.0)), 1.0)
+
+
 def test_ogden_arruda_boyce_and_gent_gent_match_cli(cli):
     # Ogden's (1972) three-term fit to Treloar: G = sum mu_p alpha_p / 2 = 0.4225 MPa
     m = pu.Material.ogden(mu_mpa=[0.63, 0.0012, -0.01], alpha=[1.3, 5, -2])

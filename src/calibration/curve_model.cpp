@@ -11,9 +11,10 @@ namespace puncture::detail {
 namespace {
 
 // A threshold in N or N/mm does not scale with G: the normalised curve's switch moves with it.
+// Nor does a gas pressure, held or sealed.
 bool force_scales_with_g(const Problem& p) {
-  return p.preload.pressure_mpa == 0.0 && p.stick.rule != StickRule::Force &&
-         p.stick.rule != StickRule::EdgeTension;
+  return p.preload.pressure_mpa == 0.0 && !p.preload.gas_volume_mm3 &&
+         p.stick.rule != StickRule::Force && p.stick.rule != StickRule::EdgeTension;
 }
 
 }  // namespace

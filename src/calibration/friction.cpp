@@ -105,6 +105,9 @@ FrictionEstimate friction_from_hole(const Problem& problem, const HoleMeasuremen
     throw InvalidInput(
         "preload.pressure_mpa",
         "the friction calibration is not implemented for an inflated membrane (pressure > 0) yet");
+  if (problem.preload.gas_volume_mm3)
+    throw InvalidInput("preload.gas_volume_mm3",
+                       "the friction calibration is not implemented over a sealed gas chamber yet");
   if (!std::isfinite(hole.ratio) || hole.ratio <= 0.0)
     throw InvalidInput(
         "hole.ratio",

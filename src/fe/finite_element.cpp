@@ -440,6 +440,10 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
     throw InvalidInput(
         "preload.pressure_mpa",
         "the finite-element method is not implemented for an inflated membrane (pressure > 0) yet");
+  if (problem.preload.gas_volume_mm3)
+    throw InvalidInput(
+        "preload.gas_volume_mm3",
+        "the finite-element method is not implemented over a sealed gas chamber yet");
   check_options(options);
   const double A = reference_clamp_radius_mm(problem);
   double last = 0.0;

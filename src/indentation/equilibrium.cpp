@@ -10,6 +10,7 @@
 #include "indentation/physical_state.hpp"
 #include "indentation/reported_failure.hpp"
 #include "indentation/scaled_problem.hpp"
+#include "indentation/sealed_gas.hpp"
 
 namespace puncture {
 
@@ -66,6 +67,11 @@ Equilibrium solve_at_force(const Problem& problem, double force_n, Stage stage,
   if (!std::isfinite(force_n) || force_n < 0.0)
     throw InvalidInput("force_n",
                        fmt::format("force must be a finite number >= 0 N, got {}", force_n));
+  if (problem.preload.gas_volume_mm3)
+    return detail::reporting_failures<Equilibrium>([&] {
+      return detail::sealed_at_force(
+          problem, detail::sealed_chamber(problem, options), force_n, stage, options);
+    });
   const double f = force_n / detail::solver_scales(problem).force_n;
   return detail::reporting_failures<Equilibrium>([&] {
     return detail::with_shooting(problem, options, [&](const auto& shooting) {
@@ -81,6 +87,15 @@ Equilibrium solve_at_depth(const Problem& problem, double depth_mm, Stage stage,
   if (!std::isfinite(depth_mm) || depth_mm < 0.0)
     throw InvalidInput("depth_mm",
                        fmt::format("depth must be a finite number >= 0 mm, got {}", depth_mm));
+  if (problem.preload.gas_volume_mm3)
+    return detail::reporting_failures<Equilibrium>([&] {
+      return detail::sealed_at_depth(problem,
+                                     detail::sealed_chamber(problem, options),
+                                     depth_mm,
+                                     stage,
+                                     options,
+                                     problem.preload.pressure_mpa);
+    });
   const double d = depth_mm / detail::solver_scales(problem).length_mm;
   return detail::reporting_failures<Equilibrium>([&] {
     return detail::with_shooting(problem, options, [&](const auto& shooting) {

@@ -42,8 +42,9 @@ double radius_at(const Face& f, double x) {
 }  // namespace
 
 bool face_friction_direction_matters(const Problem& p) {
-  return std::holds_alternative<FlatPunch>(p.indenter) && p.preload.pressure_mpa > 0.0 &&
-         p.friction > 0.0;
+  // A sealed chamber sealed flat (P = 0) is pressurised as soon as the probe presses it.
+  return std::holds_alternative<FlatPunch>(p.indenter) &&
+         (p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3) && p.friction > 0.0;
 }
 
 std::optional<FaceSlip> face_slip(const Problem& p, double depth_mm) {

@@ -56,6 +56,13 @@ std::string part_two_text(const LoadingCurve& c, const Problem& p) {
   return *c.part_two_onset_depth_mm > end ? text + ", beyond the end of the curve" : text;
 }
 
+// A sealed chamber's gas in a state.
+std::string gas_text(const ChamberGas& gas) {
+  return fmt::format("pressure {} MPa (gauge), enclosed volume {} mm^3 above the clamp plane",
+                     num(gas.pressure_mpa),
+                     num(gas.volume_mm3));
+}
+
 // The problem's criteria in words, "; "-separated.
 std::string criteria_text(const Problem& p) {
   std::string out;
@@ -121,7 +128,10 @@ std::string full_report(const Problem& p) {
     line(out,
          "gas pressure p",
          num(p.preload.pressure_mpa) +
-             " MPa (held; the membrane is inflated first, depths from the inflated pole)");
+             (p.preload.gas_volume_mm3
+                  ? " MPa (gauge, when the chamber is sealed; the membrane is inflated first, "
+                    "depths from the inflated pole)"
+                  : " MPa (held; the membrane is inflated first, depths from the inflated pole)"));
     // Which inflated state the indentation starts from, when there is one (else the solve says
     // why): the first, reached by inflating slowly from flat.
     SolverOptions quiet;
@@ -142,6 +152,14 @@ std::string full_report(const Problem& p) {
                            : std::string()));
     }
   }
+  if (const auto v0 = p.preload.gas_volume_mm3)
+    line(out,
+         "sealed chamber",
+         fmt::format("{} mm^3 of gas under the flat membrane, closed at {} MPa gauge "
+                     "(atmosphere {} MPa): isothermal, its pressure follows the enclosed volume",
+                     num(*v0),
+                     num(p.preload.pressure_mpa),
+                     num(p.preload.atmospheric_pressure_mpa)));
   line(out, "material", describe(p.material));
   line(out, "friction mu'", num(p.friction));
   if (p.criteria.empty())
@@ -168,6 +186,7 @@ std::string full_report(const Equilibrium& e, const Problem& p) {
        "force",
        fmt::format("{} N (F / 2 pi G H A = {})", num(e.force_n), num(e.normalized_force)));
   line(out, "depth", num(e.depth_mm) + " mm");
+  if (e.gas) line(out, "chamber gas", gas_text(*e.gas));
   line(out, "Part III stretch", num(e.part_three_stretch));
   line(out, "corner at reference R", num(e.corner_reference_radius_mm) + " mm");
   if (e.configuration == Configuration::SlipWithPartTwo)
@@ -217,6 +236,7 @@ std::string full_report(const PuncturePrediction& p) {
        "puncture force",
        fmt::format("{} N (F / 2 pi G H A = {})", num(p.force_n), num(p.normalized_force)));
   line(out, "puncture depth", num(p.depth_mm) + " mm");
+  if (p.state.gas) line(out, "chamber gas", gas_text(*p.state.gas));
   if (p.energy_to_puncture_mj)
     line(out,
          "energy to puncture",

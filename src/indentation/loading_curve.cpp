@@ -10,8 +10,10 @@
 #include "indentation/curve_following.hpp"
 #include "indentation/dispatch.hpp"
 #include "indentation/face_slip.hpp"
+#include "indentation/path_puncture.hpp"
 #include "indentation/puncture_search.hpp"
 #include "indentation/reported_failure.hpp"
+#include "indentation/sealed_gas.hpp"
 
 namespace puncture {
 
@@ -73,15 +75,16 @@ StageBoundary stick_slip_boundary(const Problem& p, const SolverOptions& options
   });
 }
 
-PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& options) {
-  validate(p);
-  check_warm_start(options);
-  return detail::reporting_failures<PuncturePrediction>([&] {
-    return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
+namespace detail {
+
+PuncturePrediction puncture_on_path(const Problem& p, const SolverOptions& options,
+                                    bool face_slip_checked) {
+  return reporting_failures<PuncturePrediction>([&] {
+    return with_shooting(p, without_fields(options), [&](const auto& shooting) {
       bool at_switch = false;
-      const auto switch_point = detail::locate_switch(p, shooting);
-      auto puncture = with_face_slip_checked(
-          p, detail::find_puncture(p, options, shooting, switch_point, at_switch));
+      const auto switch_point = locate_switch(p, shooting);
+      auto puncture = find_puncture(p, options, shooting, switch_point, at_switch);
+      if (face_slip_checked) puncture = with_face_slip_checked(p, std::move(puncture));
       if (options.energy_to_puncture && puncture.ok()) {
         const auto& boundary = switch_point.boundary;
         detail::add_energy_to_puncture(
@@ -96,6 +99,17 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
       return puncture;
     });
   });
+}
+
+}  // namespace detail
+
+PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& options) {
+  validate(p);
+  check_warm_start(options);
+  if (!p.preload.gas_volume_mm3) return detail::puncture_on_path(p, options, true);
+  return with_face_slip_checked(p, detail::reporting_failures<PuncturePrediction>([&] {
+                                  return detail::sealed_puncture(p, options);
+                                }));
 }
 
 LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
@@ -114,6 +128,13 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
                                      i + 1,
                                      d));
   }
+  if (p.preload.gas_volume_mm3)
+    return detail::reporting_failures<LoadingCurve>([&] {
+      auto out = detail::sealed_loading_curve(p, curve, options);
+      out.puncture = with_face_slip_checked(p, std::move(out.puncture));
+      out.face_slides_outward_from_mm = face_outward_from(p, out.points);
+      return out;
+    });
   return detail::reporting_failures<LoadingCurve>([&] {
     return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       auto out = detail::curve_to_puncture(p, shooting, curve, options);

@@ -346,6 +346,27 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
                                   "so far: stick rule must be 'none', got '{}'",
                                   to_string(p.stick.rule))});
   }
+  if (const auto v0 = p.preload.gas_volume_mm3) {
+    if (!std::isfinite(*v0) || *v0 <= 0.0)
+      errors.push_back({"preload.gas_volume_mm3",
+                        fmt::format("gas volume must be a finite number > 0 mm^3 (the sealed "
+                                    "chamber's volume under the flat membrane), got {}",
+                                    *v0)});
+    if (const double p_atm = p.preload.atmospheric_pressure_mpa;
+        !std::isfinite(p_atm) || p_atm <= 0.0)
+      errors.push_back({"preload.atmospheric_pressure_mpa",
+                        fmt::format("atmospheric pressure must be a finite number > 0 MPa (the "
+                                    "sealed gas's absolute pressure is the gauge pressure plus "
+                                    "it), got {}",
+                                    p_atm)});
+    // Sealed flat (no pressure yet): the gas pressurises the face as soon as it is pressed.
+    if (!(p.preload.pressure_mpa > 0.0) && std::holds_alternative<FlatPunch>(p.indenter) &&
+        p.stick.rule != StickRule::None)
+      errors.push_back({"stick.rule",
+                        fmt::format("over a sealed gas chamber the flat punch is solved sliding "
+                                    "only so far: stick rule must be 'none', got '{}'",
+                                    to_string(p.stick.rule))});
+  }
   const auto& s = p.stick;
   // The sphere-tipped probe is solved sliding only (docs/model.md, §15): a stick stage is
   // refused rather than answered as sliding.

@@ -331,6 +331,10 @@ VerificationReport verify(const Problem& problem, const VerifyOptions& options) 
     throw InvalidInput(
         "preload.pressure_mpa",
         "the verification methods are not implemented for an inflated membrane (pressure > 0) yet");
+  if (problem.preload.gas_volume_mm3)
+    throw InvalidInput(
+        "preload.gas_volume_mm3",
+        "the verification methods are not implemented over a sealed gas chamber yet");
   if (options.elements < 4 || options.elements > 4096)
     throw std::invalid_argument(
         fmt::format("elements: must be in the range 4 to 4096, got {}", options.elements));
