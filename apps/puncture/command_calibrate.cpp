@@ -25,11 +25,6 @@ constexpr const char* kCalibrateFooter =
     "The physical flags (see puncture --help) describe the membrane and indenter of the test;\n"
     "the parameter being calibrated must not be given.  Output flags: --format, --output.";
 
-bool given(const CLI::App& app, const char* flag) {
-  const auto* option = app.get_option_no_throw(flag);
-  return option && option->count() > 0;
-}
-
 void require_finite(double value, const char* flag, const char* range, bool ok) {
   if (!std::isfinite(value) || !ok)
     throw InputError(fmt::format("{}: must be a finite number {}, got {}", flag, range, value));
