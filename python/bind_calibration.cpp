@@ -32,11 +32,6 @@ void require_finite(double value, const char* name, const char* range, bool ok) 
         fmt::format("{}: must be a finite number {}, got {}", name, range, value));
 }
 
-void check_problem(const Problem& problem) {
-  if (const auto message = invalid_input_message(problem); !message.empty())
-    throw py::value_error(message);
-}
-
 void check_problem(const Problem& problem, Unknown unknown) {
   if (const auto message = invalid_input_message(validation_errors(problem, unknown));
       !message.empty())

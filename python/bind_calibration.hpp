@@ -35,7 +35,7 @@ auto as_value_error(F&& f, const std::string& prefix = {}) {
   }
 }
 
-void check_problem(const Problem& problem);
+using python::check_problem;  // bindings.hpp
 // The problem's errors but those of the unknown a calibration determines.
 void check_problem(const Problem& problem, Unknown unknown);
 

@@ -185,6 +185,11 @@ std::string invalid_input_message(const Problem& problem) {
   return invalid_input_message(validation_errors(problem));
 }
 
+void check_problem(const Problem& problem) {
+  if (const auto message = invalid_input_message(problem); !message.empty())
+    throw py::value_error(message);
+}
+
 void bind_problem(py::module_& m) {
   py::class_<Geometry> geometry(m, "Geometry", "The membrane's dimensions [mm]");
   geometry

@@ -29,11 +29,6 @@ struct SolverFailure : std::runtime_error {
 
 using StageArg = std::variant<Stage, std::string>;
 
-void check_problem(const Problem& problem) {
-  if (const auto message = invalid_input_message(problem); !message.empty())
-    throw py::value_error(message);
-}
-
 // Same wording as the CLI's checks of --force and --depth.
 void check_load(double value, const char* name, const char* unit) {
   if (!std::isfinite(value) || value < 0.0)

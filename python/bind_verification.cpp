@@ -17,11 +17,6 @@ namespace puncture::python {
 
 namespace {
 
-void check_problem(const Problem& problem) {
-  if (const auto message = invalid_input_message(problem); !message.empty())
-    throw py::value_error(message);
-}
-
 std::optional<double> number_of(const VerificationCheck& c, double value) {
   return has_numbers(c) ? std::optional<double>(value) : std::nullopt;
 }

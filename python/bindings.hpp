@@ -59,6 +59,8 @@ struct Typed {
 // CLI prefixes them with the flag), under "invalid input:"; empty when there is none.
 std::string invalid_input_message(const std::vector<ValidationError>& errors);
 std::string invalid_input_message(const Problem& problem);
+// ValueError with that message when the problem has validation errors.
+void check_problem(const Problem& problem);
 
 // Runs f; an InvalidInput it throws becomes ValueError naming the attribute or argument (one
 // error: "name: message"; several: as invalid_input_message).

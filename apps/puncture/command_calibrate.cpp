@@ -35,11 +35,6 @@ std::vector<std::string> local_criterion_names() {
   return out;
 }
 
-bool given(const CLI::App& app, const char* flag) {
-  const auto* option = app.get_option_no_throw(flag);
-  return option && option->count() > 0;
-}
-
 void require_finite(double value, const char* flag, const char* range, bool ok) {
   if (!std::isfinite(value) || !ok)
     throw InputError(fmt::format("{}: must be a finite number {}, got {}", flag, range, value));

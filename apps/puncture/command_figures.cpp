@@ -63,9 +63,9 @@ constexpr double kFig14DefaultPressureMpa = 3e-4;
 constexpr std::array kFig14Friction{0.18, 1.95};
 
 // A number, or null when it is not finite (a failed or unbounded quantity).
-json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+json json_number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
-json inputs_json(const Problem& p) {
+json figure_inputs_json(const Problem& p) {
   json material = {{"law", law_name(p.material.law)},
                    {"shear_modulus_mpa", p.material.shear_modulus_mpa}};
   if (const auto* gent = std::get_if<Gent>(&p.material.law)) material["j_lim"] = gent->j_lim;
@@ -103,12 +103,12 @@ json fig11(const Problem& base) {
     const double t = static_cast<double>(k) / kPoints;
     const double l = 1.0 + (top - 1.0) * std::min(1.0 - (1.0 - t) * (1.0 - t), 0.9999);
     stretch.push_back(l);
-    stress.push_back(number(g * uniaxial_stress(base.material.law, l)));
-    neo.push_back(number(g * uniaxial_stress(NeoHookean{}, l)));
+    stress.push_back(json_number(g * uniaxial_stress(base.material.law, l)));
+    neo.push_back(json_number(g * uniaxial_stress(NeoHookean{}, l)));
   }
   return {{"material", describe(base.material)},
           {"shear_modulus_mpa", g},
-          {"locking_stretch", number(top < kCap ? top : NAN)},
+          {"locking_stretch", json_number(top < kCap ? top : NAN)},
           {"stretch", stretch},
           {"stress_mpa", stress},
           {"neo_hookean_stress_mpa", neo}};
@@ -137,13 +137,13 @@ json fig12a(const Problem& base) {
         json r = json::array(), i1 = json::array(), part = json::array();
         for (std::size_t i = 0; i < e.fields.size(); ++i) {
           r.push_back(e.fields.reference_radius_mm[i]);
-          i1.push_back(number(e.fields.first_invariant[i]));
+          i1.push_back(json_number(e.fields.first_invariant[i]));
           part.push_back(e.fields.part[i]);
         }
         c["configuration"] = to_token(e.configuration);
-        c["part_three_stretch"] = number(e.part_three_stretch);
+        c["part_three_stretch"] = json_number(e.part_three_stretch);
         c["corner_reference_radius_mm"] = e.corner_reference_radius_mm;
-        c["max_i1"] = number(e.max_first_invariant);
+        c["max_i1"] = json_number(e.max_first_invariant);
         c["R_mm"] = r;
         c["I1"] = i1;
         c["part"] = part;
@@ -170,7 +170,7 @@ json fig12b(const Problem& base) {
         p.friction = kFig12bMaxFriction * k / kFig12bSteps;
         const auto e = solve_at_force(p, force, Stage::Slip, options);
         friction.push_back(p.friction);
-        stretch.push_back(e.ok() ? number(e.part_three_stretch) : json(nullptr));
+        stretch.push_back(e.ok() ? json_number(e.part_three_stretch) : json(nullptr));
         configuration.push_back(e.ok() ? to_token(e.configuration) : "failed");
       }
       series.push_back({{"indenter_radius_mm", radius_mm(p.indenter)},
@@ -183,7 +183,7 @@ json fig12b(const Problem& base) {
   return {{"normalized_force", kFig12NormalizedForce}, {"series", series}};
 }
 
-json curve_json(const Problem& p, int points) {
+json figure_curve_json(const Problem& p, int points) {
   CurveOptions options;
   options.points = points;
   const auto c = loading_curve(p, options);
@@ -194,8 +194,8 @@ json curve_json(const Problem& p, int points) {
   }
   json depth = json::array(), force = json::array(), configuration = json::array();
   for (const auto& q : c.points) {
-    depth.push_back(number(q.depth_mm));
-    force.push_back(number(q.force_n));
+    depth.push_back(json_number(q.depth_mm));
+    force.push_back(json_number(q.force_n));
     configuration.push_back(to_token(q.configuration));
   }
   out["depth_mm"] = depth;
@@ -203,11 +203,11 @@ json curve_json(const Problem& p, int points) {
   out["configuration"] = configuration;
   // Under a gas pressure with friction: the points before it are not the membrane's states.
   if (c.face_slides_outward_from_mm)
-    out["face_slides_outward_from_mm"] = number(*c.face_slides_outward_from_mm);
+    out["face_slides_outward_from_mm"] = json_number(*c.face_slides_outward_from_mm);
   if (c.puncture.ok())
-    out["puncture"] = {{"depth_mm", number(c.puncture.depth_mm)},
-                       {"force_n", number(c.puncture.force_n)},
-                       {"part_three_stretch", number(c.puncture.part_three_stretch)},
+    out["puncture"] = {{"depth_mm", json_number(c.puncture.depth_mm)},
+                       {"force_n", json_number(c.puncture.force_n)},
+                       {"part_three_stretch", json_number(c.puncture.part_three_stretch)},
                        {"crack_location", c.puncture.crack_location}};
   else
     out["puncture"] = nullptr;
@@ -223,7 +223,7 @@ json fig13(const Problem& base, int points) {
     json curves = json::array();
     for (const auto equation : kEquations) {
       p.part_two_equation = equation;
-      curves.push_back(curve_json(p, points));
+      curves.push_back(figure_curve_json(p, points));
     }
     panels.push_back({{"label", panel.label},
                       {"indenter_radius_mm", panel.indenter_radius_mm},
@@ -243,7 +243,7 @@ json fig14(const Problem& base, int points) {
   json curves = json::array();
   for (const double mu : kFig14Friction) {
     p.friction = mu;
-    json c = curve_json(p, points);
+    json c = figure_curve_json(p, points);
     c["friction"] = mu;
     curves.push_back(c);
   }
@@ -264,7 +264,7 @@ void add_figures_options(CLI::App& figures, FiguresFlags& f) {
 
 std::string figures_json(const Problem& base, const CurveFlags& curve) {
   Progress progress("figures");
-  json out = {{"inputs", inputs_json(base)}};
+  json out = {{"inputs", figure_inputs_json(base)}};
   progress.note("Fig. 11");
   out["fig11"] = fig11(base);
   progress.note("Fig. 12(a)");

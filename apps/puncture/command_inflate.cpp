@@ -33,11 +33,6 @@ constexpr const char* kFooter =
     "  puncture inflate --pressure 0.0009               every state at 0.0009 MPa\n"
     "  puncture inflate --pole-stretch 3 --format json  one state with its fields";
 
-bool given(const CLI::App& app, const char* flag) {
-  const auto* option = app.get_option_no_throw(flag);
-  return option && option->count() > 0;
-}
-
 }  // namespace
 
 void add_inflate_command(CLI::App& app, InflateFlags& f) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "cli_error.hpp"
@@ -23,6 +24,11 @@ inline double finite(double x, std::string_view what) {
 inline std::optional<double> finite_or_unbounded(double x, std::string_view what) {
   if (std::isinf(x)) return std::nullopt;
   return finite(x, what);
+}
+
+// A number of the readable summaries, 5 significant digits, checked finite.
+inline std::string num(double x, std::string_view what) {
+  return fmt::format("{:.5g}", finite(x, what));
 }
 
 }  // namespace puncture::cli

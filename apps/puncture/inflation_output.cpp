@@ -136,23 +136,21 @@ json inputs_json(const InflationProblem& p) {
 
 // ----- summary pieces --------------------------------------------------------------------------
 
-std::string num(double x, std::string_view what) { return fmt::format("{:.5g}", finite(x, what)); }
-
-void line(std::string& out, std::string_view label, std::string_view value) {
+void summary_line(std::string& out, std::string_view label, std::string_view value) {
   out += fmt::format("  {:<26}{}\n", label, value);
 }
 
 void inputs(std::string& out, const InflationProblem& p) {
   out += "Inputs\n";
-  line(out, "clamp radius A", num(p.clamp_radius_mm, "clamp radius") + " mm");
-  line(out, "thickness H", num(p.thickness_mm, "thickness") + " mm");
-  line(out, "material", describe(p.material));
-  line(out, "critical I1 (burst)", num(p.critical_i1, "critical I1"));
+  summary_line(out, "clamp radius A", num(p.clamp_radius_mm, "clamp radius") + " mm");
+  summary_line(out, "thickness H", num(p.thickness_mm, "thickness") + " mm");
+  summary_line(out, "material", describe(p.material));
+  summary_line(out, "critical I1 (burst)", num(p.critical_i1, "critical I1"));
   if (p.prestretch != 1.0)
-    line(out,
+    summary_line(out,
          "pre-stretch L0",
          num(p.prestretch, "pre-stretch") + " (stress-free disc of radius A / L0 clamped at A)");
-  line(out,
+  summary_line(out,
        "pressure scale G H / A",
        num(pressure_scale_mpa(p), "pressure scale") + " MPa (normalised pressure = p / this)");
 }
@@ -171,26 +169,26 @@ std::string where_text(const InflationState& s) {
 }
 
 void state_lines(std::string& out, const InflationState& s) {
-  line(out,
+  summary_line(out,
        "pressure",
        fmt::format("{} (p A / G H = {})",
                    pressure_text(s.pressure_mpa, "pressure"),
                    num(s.normalized_pressure, "normalised pressure")));
-  line(out, "pole stretch", num(s.pole_stretch, "pole stretch"));
-  line(out, "pole height", num(s.pole_height_mm, "pole height") + " mm");
-  line(out, "volume", num(s.volume_mm3, "volume") + " mm^3");
-  line(out, "stored energy", num(s.stored_energy_mj, "stored energy") + " mJ");
+  summary_line(out, "pole stretch", num(s.pole_stretch, "pole stretch"));
+  summary_line(out, "pole height", num(s.pole_height_mm, "pole height") + " mm");
+  summary_line(out, "volume", num(s.volume_mm3, "volume") + " mm^3");
+  summary_line(out, "stored energy", num(s.stored_energy_mj, "stored energy") + " mJ");
   const auto rho = bounded(s.pole_curvature_radius_mm, "pole radius of curvature");
-  line(out,
+  summary_line(out,
        "pole radius of curvature",
        rho ? num(*rho, "pole radius of curvature") + " mm" : "n/a (flat)");
-  line(out, "pole tension", num(s.pole_tension_n_per_mm, "pole tension") + " N/mm (true)");
-  line(out,
+  summary_line(out, "pole tension", num(s.pole_tension_n_per_mm, "pole tension") + " N/mm (true)");
+  summary_line(out,
        "clamp",
        fmt::format("lambda1 = {}, slope {} deg",
                    num(s.clamp_radial_stretch, "clamp stretch"),
                    num(s.clamp_slope_rad * 180.0 / std::numbers::pi, "clamp slope")));
-  line(out,
+  summary_line(out,
        "largest I1",
        fmt::format("{} at {}", num(s.max_first_invariant, "largest I1"), where_text(s)));
 }
@@ -198,7 +196,7 @@ void state_lines(std::string& out, const InflationState& s) {
 void extremum_lines(std::string& out, const PressureExtremum& e) {
   const auto& s = e.state;
   const bool max = e.kind == ExtremumKind::Maximum;
-  line(out,
+  summary_line(out,
        max ? "pressure maximum" : "pressure minimum",
        fmt::format("{} at pole stretch {} (height {} mm, volume {} mm^3)",
                    pressure_text(s.pressure_mpa, "extremum pressure"),
@@ -210,7 +208,7 @@ void extremum_lines(std::string& out, const PressureExtremum& e) {
 }
 
 void extrema_lines(std::string& out, const std::vector<PressureExtremum>& extrema) {
-  if (extrema.empty()) line(out, "pressure extrema", "none: the pressure rises throughout");
+  if (extrema.empty()) summary_line(out, "pressure extrema", "none: the pressure rises throughout");
   for (const auto& e : extrema) extremum_lines(out, e);
 }
 
@@ -256,7 +254,7 @@ std::string summary(const InflationCurveReport& r) {
   extrema_lines(out, c.extrema);
   out += fmt::format("Burst (largest I1 = {})\n", num(r.problem.critical_i1, "critical I1"));
   if (!c.burst.ok()) {
-    line(out, "burst", "not found: " + c.burst.message);
+    summary_line(out, "burst", "not found: " + c.burst.message);
   } else {
     state_lines(out, c.burst.state);
     if (c.burst.state.pole_stretch > c.end_pole_stretch)
@@ -330,7 +328,7 @@ std::string summary(const InflationPressureReport& r) {
                      pressure_text(a.pressure_mpa, "pressure"),
                      num(a.max_pole_stretch, "search end"),
                      r.to_burst ? "the burst" : "set by --max-pole-stretch");
-  line(out,
+  summary_line(out,
        "states",
        a.states.size() == 1 ? std::string("1")
                             : fmt::format("{}; the first is reached by inflating slowly from flat",

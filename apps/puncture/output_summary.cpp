@@ -13,8 +13,6 @@ namespace puncture::cli {
 
 namespace {
 
-std::string num(double x, std::string_view what) { return fmt::format("{:.5g}", finite(x, what)); }
-
 // About 16 evenly spaced rows (all up to 24), the last one, and both sides of a stage change.
 std::vector<std::size_t> sampled_rows(const std::vector<CurvePoint>& points) {
   const std::size_t n = points.size();

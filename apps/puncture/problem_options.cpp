@@ -505,4 +505,9 @@ InflationProblem make_inflation_problem(const ProblemFlags& f) {
   return p;
 }
 
+bool given(const CLI::App& app, const char* flag) {
+  const auto* option = app.get_option_no_throw(flag);
+  return option && option->count() > 0;
+}
+
 }  // namespace puncture::cli

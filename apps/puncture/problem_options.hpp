@@ -10,6 +10,9 @@
 
 namespace puncture::cli {
 
+// Whether the flag (e.g. "--critical-i1") was given on the command line or in the config.
+bool given(const CLI::App& app, const char* flag);
+
 struct ProblemFlags {
   Problem defaults;
   double clamp_radius_mm = defaults.geometry.clamp_radius_mm;

@@ -1,7 +1,8 @@
 #pragma once
 // From the user's Problem to the solver: the material law and the indenter are chosen at run
-// time (std::variant) and dispatched here, once per solve, to the shooting for that law and that
-// indenter's contact model.  A new indenter adds its contact model here.
+// time (std::variant).  The indenter is dispatched here, once per solve, to the shooting for its
+// contact model; the law travels as a RuntimeLaw, which picks the law at each stress evaluation
+// (mechanics/runtime_law.hpp).  A new indenter adds its contact model here.
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -11,6 +12,7 @@
 #include "indentation/contact/sphere_tipped.hpp"
 #include "indentation/inflated_dome.hpp"
 #include "indentation/shooting.hpp"
+#include "mechanics/runtime_law.hpp"
 #include "puncture/options.hpp"
 #include "puncture/problem.hpp"
 
@@ -41,8 +43,8 @@ inline SphereTippedSettings contact_settings(const Problem& p, const SphereTippe
 template <class Law, class Shape>
 using ContactModelOf = decltype(contact_model_of<Law>(std::declval<const Shape&>()));
 
-// fn(shooting) with the shooting of the problem's law and indenter; every pair gives fn's result
-// the same type.
+// fn(shooting) with the shooting of the problem's law and indenter; every indenter gives fn's
+// result the same type.
 // Under a gas pressure the membrane is inflated first (inflated_dome; a pressure it cannot hold
 // throws PhysicalFailure, which reporting_failures turns into the result's status).
 template <class Fn>
@@ -54,14 +56,14 @@ decltype(auto) with_shooting(const Problem& problem, const SolverOptions& option
     settings.dome_height = dome->height;
     dome_state = std::move(dome->state);
   }
+  const RuntimeLaw law(problem.material.law);
   return std::visit(
-      [&](const auto& law, const auto& shape) -> decltype(auto) {
-        using Contact = ContactModelOf<std::decay_t<decltype(law)>, std::decay_t<decltype(shape)>>;
+      [&](const auto& shape) -> decltype(auto) {
+        using Contact = ContactModelOf<RuntimeLaw, std::decay_t<decltype(shape)>>;
         const IndentationShooting<Contact> shooting(
             law, settings, contact_settings(problem, shape), options.record_fields, dome_state);
         return std::forward<Fn>(fn)(shooting);
       },
-      problem.material.law,
       problem.indenter);
 }
 

@@ -14,6 +14,7 @@
 #include "inflation/pole_start.hpp"
 #include "inflation/scaled_inflation.hpp"
 #include "mechanics/free_membrane_ode.hpp"
+#include "mechanics/runtime_law.hpp"
 #include "numerics/interior_maximum.hpp"
 #include "puncture/kinematics.hpp"
 
@@ -240,8 +241,9 @@ ScaledInflation solve_inflation(const InflationProblem& problem, double l0,
   }
   SolverOptions o = options;
   o.record_fields = true;  // samples are cheap next to the shooting; the caller drops them
-  auto out = std::visit(
-      [&](const auto& l) { return InflationShooter(l, flat, o).solve(l0, pressure_guess); }, law);
+  // One shooter for every law (mechanics/runtime_law.hpp): compiled once, not once per law.
+  const RuntimeLaw runtime_law(law);
+  auto out = InflationShooter<RuntimeLaw>(runtime_law, flat, o).solve(l0, pressure_guess);
   if (!options.record_fields) out.samples.clear();
   return out;
 }

@@ -6,25 +6,18 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "calibration_test_support.hpp"
 #include "puncture/calibration.hpp"
 #include "seeded_noise.hpp"
 
 namespace puncture {
 namespace {
 
-SolverOptions quiet() {
-  SolverOptions o;
-  o.record_fields = false;
-  return o;
-}
+using test::dry_small_indenter;
+using test::kRecoveryTol;
+using test::quiet;
 
 // The paper's dry test: 1 mm indenter, mu' = 1.95 (§4.2).
-Problem dry_small_indenter() {
-  Problem p;
-  p.indenter = FlatPunch{1.0};
-  p.friction = 1.95;
-  return p;
-}
 
 double stretch_at_force(Problem p, double mu, double force) {
   p.friction = mu;
@@ -35,7 +28,6 @@ double stretch_at_force(Problem p, double mu, double force) {
 
 // Each model evaluation is converged to ~1e-10 (shooting and integration tolerances) and the
 // root is bracketed to 1e-8 in mu', so 1e-6 leaves two orders of margin.
-constexpr double kRecoveryTol = 1e-6;
 
 TEST(FrictionFromHole, RecoversFrictionAtTheMeasuredForce) {
   for (const auto& [indenter, mu, force] :

@@ -6,17 +6,15 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "calibration_test_support.hpp"
 #include "puncture/calibration.hpp"
 #include "seeded_noise.hpp"
 
 namespace puncture {
 namespace {
 
-SolverOptions quiet() {
-  SolverOptions o;
-  o.record_fields = false;
-  return o;
-}
+using test::kRecoveryTol;
+using test::quiet;
 
 double puncture_force(Problem p, double j_lim) {
   p.material.law = Gent{j_lim};
@@ -28,7 +26,6 @@ double puncture_force(Problem p, double j_lim) {
 // The inversion runs in log(J_lim - (I1c - 3)) and log F to 1e-10, and each force is converged
 // to ~1e-9 relative; near J_lim = 110 d log F / d log J_lim ~ -4, so J_lim is good to ~1e-9:
 // 1e-6 relative leaves a wide margin.
-constexpr double kRecoveryTol = 1e-6;
 
 TEST(JLimFromPunctureForce, RecoversJLim) {
   Problem lubricated;  // 2 mm, mu' = 0.18

@@ -11,16 +11,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "calibration_test_support.hpp"
 #include "puncture/loading_curve.hpp"
 
 namespace puncture {
 namespace {
 
-SolverOptions quiet() {
-  SolverOptions o;
-  o.record_fields = false;
-  return o;
-}
+using test::dry_small_indenter;
+using test::quiet;
 
 PuncturePrediction solve(const Problem& p) {
   const auto punct = predict_puncture(p, quiet());
@@ -41,13 +39,6 @@ BandRanges paper_ranges_for(const Problem& p) {
   return r;
 }
 BandRanges paper_ranges() { return paper_ranges_for(Problem{}); }
-
-Problem dry_small_indenter() {
-  Problem p;
-  p.indenter = FlatPunch{1.0};
-  p.friction = 1.95;
-  return p;
-}
 
 Problem with_value(Problem p, BandParameter parameter, double value) {
   switch (parameter) {

@@ -19,12 +19,12 @@
 namespace puncture {
 namespace {
 
-struct Case {
+struct CriteriaCase {
   const char* name;
   Problem problem;
 };
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const CriteriaCase& c, std::ostream* os) { *os << c.name; }
 
 Problem with_law(MaterialLaw law) { return test::paper_problem(law, 0.18); }
 
@@ -54,7 +54,7 @@ Problem ogden() {
   return p;
 }
 
-class CriteriaAtTheI1Puncture : public ::testing::TestWithParam<Case> {};
+class CriteriaAtTheI1Puncture : public ::testing::TestWithParam<CriteriaCase> {};
 
 TEST_P(CriteriaAtTheI1Puncture, EachCriterionFindsTheSamePuncture) {
   const Problem& p = GetParam().problem;
@@ -100,22 +100,26 @@ TEST_P(CriteriaAtTheI1Puncture, EachCriterionFindsTheSamePuncture) {
 
 INSTANTIATE_TEST_SUITE_P(
     Criteria, CriteriaAtTheI1Puncture,
-    ::testing::Values(Case{"gent_lubricated", with_law(Gent{125.0})},
-                      Case{"gent_dry_1mm",
-                           [] {
-                             Problem p = test::paper_problem(Gent{125.0}, 1.95);
-                             p.indenter = FlatPunch{1.0};
-                             return p;
-                           }()},
-                      Case{"gent_held_4mm", held()}, Case{"neo_hookean", with_law(NeoHookean{})},
-                      Case{"mooney_rivlin", with_law(MooneyRivlin{0.1})},
-                      Case{"yeoh", with_law(Yeoh{0.025, 0.0005})}, Case{"ogden", ogden()},
-                      Case{"arruda_boyce", with_law(ArrudaBoyce{})},
-                      Case{"gent_gent", with_law(GentGent{})},
-                      Case{"sphere_tipped", sphere_tipped(0.0, 0.0)},
-                      Case{"sphere_tipped_pressure", sphere_tipped(0.0, 0.0005)},
-                      Case{"prestretch_1_2", prestretched(1.2)}),
-    [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+    ::testing::Values(CriteriaCase{"gent_lubricated", with_law(Gent{125.0})},
+                      CriteriaCase{"gent_dry_1mm",
+                                   [] {
+                                     Problem p = test::paper_problem(Gent{125.0}, 1.95);
+                                     p.indenter = FlatPunch{1.0};
+                                     return p;
+                                   }()},
+                      CriteriaCase{"gent_held_4mm", held()},
+                      CriteriaCase{"neo_hookean", with_law(NeoHookean{})},
+                      CriteriaCase{"mooney_rivlin", with_law(MooneyRivlin{0.1})},
+                      CriteriaCase{"yeoh", with_law(Yeoh{0.025, 0.0005})},
+                      CriteriaCase{"ogden", ogden()},
+                      CriteriaCase{"arruda_boyce", with_law(ArrudaBoyce{})},
+                      CriteriaCase{"gent_gent", with_law(GentGent{})},
+                      CriteriaCase{"sphere_tipped", sphere_tipped(0.0, 0.0)},
+                      CriteriaCase{"sphere_tipped_pressure", sphere_tipped(0.0, 0.0005)},
+                      CriteriaCase{"prestretch_1_2", prestretched(1.2)}),
+    [](const ::testing::TestParamInfo<CriteriaCase>& info) {
+      return std::string(info.param.name);
+    });
 
 TEST(CriteriaOnAState, LargestOverTheFieldsAndPartThreesClosedForm) {
   Problem p = test::paper_problem();

@@ -15,8 +15,6 @@ namespace calibration {
 
 // ----- shared helpers -------------------------------------------------------------------------
 
-std::string num(double x, std::string_view what) { return fmt::format("{:.5g}", finite(x, what)); }
-
 std::string num_or(const std::optional<double>& x, std::string_view what,
                    std::string_view missing) {
   return x ? num(*x, what) : std::string(missing);

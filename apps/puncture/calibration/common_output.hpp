@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "calibration_output.hpp"
+#include "finite.hpp"
 #include "json_helpers.hpp"
 #include "puncture/calibration.hpp"
 #include "puncture/problem.hpp"
@@ -17,8 +18,6 @@
 namespace puncture::cli::calibration {
 
 // ----- shared helpers -------------------------------------------------------------------------
-
-std::string num(double x, std::string_view what);
 
 std::string num_or(const std::optional<double>& x, std::string_view what,
                    std::string_view missing = "n/a");

@@ -13,7 +13,6 @@ namespace puncture::cli {
 namespace {
 
 using calibration::line;
-using calibration::num;
 using calibration::num_or;
 
 std::string unit_suffix(const FailureCriterion& c) {

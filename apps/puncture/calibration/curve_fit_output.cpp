@@ -14,7 +14,6 @@ namespace puncture::cli {
 namespace {
 
 using calibration::line;
-using calibration::num;
 using calibration::num_or;
 using calibration::sampled_rows;
 

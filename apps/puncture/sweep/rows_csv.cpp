@@ -8,7 +8,7 @@ namespace puncture::cli {
 
 namespace {
 
-std::string quoted(const std::string& text) {
+std::string quoted_cell(const std::string& text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
   std::string out = "\"";
   for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -35,7 +35,7 @@ void add_cell(std::string& line, const std::string& cell) {
 
 std::string sweep_csv_header(const SweepSpec& spec) {
   std::string line = "point";
-  for (const SweepParameter& p : spec.parameters) add_cell(line, quoted(p.name));
+  for (const SweepParameter& p : spec.parameters) add_cell(line, quoted_cell(p.name));
   line += ",status,failure_kind";
   if (spec.outputs.puncture)
     line +=
@@ -49,8 +49,8 @@ std::string sweep_csv_header(const SweepSpec& spec) {
 
 std::string sweep_csv_line(const SweepRow& row) {
   std::string line = std::to_string(row.point.index);
-  for (const std::string& text : row.point.texts) add_cell(line, quoted(text));
-  add_cell(line, quoted(to_string(row.status)));
+  for (const std::string& text : row.point.texts) add_cell(line, quoted_cell(text));
+  add_cell(line, quoted_cell(to_string(row.status)));
   add_cell(line, to_token(row.failure_kind()));
   if (row.puncture) {
     const SweepPuncture& p = *row.puncture;
@@ -62,13 +62,13 @@ std::string sweep_csv_line(const SweepRow& row) {
                              p.crack_reference_radius_mm,
                              p.crack_radius_mm})
         add_cell(line, number(x));
-      add_cell(line, quoted(p.crack_location));
+      add_cell(line, quoted_cell(p.crack_location));
     } else {
       line += ",,,,,,,";
     }
   }
   for (const SweepForceAtDepth& f : row.at_depth) add_cell(line, f.ok() ? number(f.force_n) : "");
-  add_cell(line, quoted(one_line(row.message)));
+  add_cell(line, quoted_cell(one_line(row.message)));
   line += '\n';
   return line;
 }
