@@ -222,7 +222,8 @@ TEST(EnergyRelease, MonotoneAndFirstMetGoverns) {
   EXPECT_EQ(first.depth_mm, std::min(low.depth_mm, by_i1.depth_mm));
 }
 
-bool has_error(const Problem& p, const std::string& parameter, const std::string& words) {
+bool has_validation_error(const Problem& p, const std::string& parameter,
+                          const std::string& words) {
   for (const auto& e : validation_errors(p))
     if (e.parameter == parameter && e.message.find(words) != std::string::npos) return true;
   return false;
@@ -230,26 +231,27 @@ bool has_error(const Problem& p, const std::string& parameter, const std::string
 
 TEST(EnergyRelease, RefusedWhereItDoesNotApply) {
   for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()})
-    EXPECT_TRUE(has_error(frictionless(bad), "criteria", "tearing energy must be a finite"));
+    EXPECT_TRUE(
+        has_validation_error(frictionless(bad), "criteria", "tearing energy must be a finite"));
   EXPECT_TRUE(validation_errors(frictionless(1.0)).empty());
   Problem dry = frictionless(1.0);
   dry.friction = 0.18;
-  EXPECT_TRUE(has_error(dry, "criteria", "friction dissipates"));
+  EXPECT_TRUE(has_validation_error(dry, "criteria", "friction dissipates"));
   Problem held = frictionless(1.0);
   held.stick = {StickRule::Always, 0.0};
-  EXPECT_TRUE(has_error(held, "criteria", "stick rule none"));
+  EXPECT_TRUE(has_validation_error(held, "criteria", "stick rule none"));
   Problem sphere = frictionless(1.0);
   sphere.indenter = SphereTipped{2.0};
-  EXPECT_TRUE(has_error(sphere, "criteria", "needs the flat punch"));
+  EXPECT_TRUE(has_validation_error(sphere, "criteria", "needs the flat punch"));
   Problem pressed = frictionless(1.0);
   pressed.preload.pressure_mpa = 1e-3;
-  EXPECT_TRUE(has_error(pressed, "criteria", "no gas pressure"));
+  EXPECT_TRUE(has_validation_error(pressed, "criteria", "no gas pressure"));
   EXPECT_THROW(energy_release(dry, Equilibrium{}, 1.0), InvalidInput);
   EXPECT_THROW(measure_at(CriticalEnergyRelease{1.0}, Material{}, 2.0, 2.0), InvalidInput);
   // A pre-stretched membrane whose cut releases the tearing energy as it is mounted.
   Problem mounted = frictionless(1e-4);
   mounted.preload.prestretch = 2.0;
-  EXPECT_TRUE(has_error(mounted, "preload.prestretch", "as it is mounted"));
+  EXPECT_TRUE(has_validation_error(mounted, "preload.prestretch", "as it is mounted"));
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ SweepSpec warm_grid(int levels = 20) {
   return spec;
 }
 
-Problem problem_at(const SweepPoint& p) {
+Problem chain_problem_at(const SweepPoint& p) {
   Problem problem;
   problem.critical_i1 = p.values[0];
   problem.friction = p.values[1];
@@ -35,12 +35,12 @@ std::vector<SweepRow> run(const SweepSpec& spec, SweepOptions options,
                           SweepSummary* summary = nullptr) {
   std::vector<SweepRow> rows;
   options.on_row = [&rows](const SweepRow& row) { rows.push_back(row); };
-  const SweepSummary s = sweep(spec, problem_at, options);
+  const SweepSummary s = sweep(spec, chain_problem_at, options);
   if (summary) *summary = s;
   return rows;
 }
 
-void expect_same(const SweepRow& a, const SweepRow& b) {
+void expect_same_row(const SweepRow& a, const SweepRow& b) {
   ASSERT_EQ(a.point.index, b.point.index);
   EXPECT_EQ(a.status, b.status);
   EXPECT_EQ(a.message, b.message);
@@ -112,7 +112,7 @@ TEST(WarmChains, WarmRowsEqualColdRowsToTheShootingTolerance) {
     const SweepRow &w = warm_rows[i], &c = cold_rows[i];
     ASSERT_TRUE(c.ok()) << c.message;
     ASSERT_EQ(w.status, c.status) << w.message;
-    const PuncturePrediction single = predict_puncture(problem_at(c.point));
+    const PuncturePrediction single = predict_puncture(chain_problem_at(c.point));
     EXPECT_EQ(c.puncture->force_n, single.force_n);
     EXPECT_EQ(c.puncture->depth_mm, single.depth_mm);
     const double df = std::abs(w.puncture->force_n / c.puncture->force_n - 1.0);
@@ -144,7 +144,7 @@ TEST(WarmChains, IdenticalRowsWhateverTheThreadsTheWindowAndTheShares) {
     for (const std::size_t window : {1u, 64u}) {
       const auto parallel = run(spec, {.threads = threads, .window_per_thread = window});
       ASSERT_EQ(parallel.size(), serial.size());
-      for (std::size_t i = 0; i < serial.size(); ++i) expect_same(parallel[i], serial[i]);
+      for (std::size_t i = 0; i < serial.size(); ++i) expect_same_row(parallel[i], serial[i]);
     }
   // Shares of 2 and 3 processes, from the start and from inside the first chain: each row the
   // serial run's, the shares together every point once.
@@ -161,7 +161,7 @@ TEST(WarmChains, IdenticalRowsWhateverTheThreadsTheWindowAndTheShares) {
         EXPECT_EQ(summary.own_points, share.size());
         for (const SweepRow& row : share) {
           EXPECT_EQ(share_of_point(spec, first, stride, row.point.index), offset);
-          expect_same(row, serial[row.point.index]);
+          expect_same_row(row, serial[row.point.index]);
         }
         rows += share.size();
       }
@@ -184,12 +184,12 @@ TEST(WarmChains, AResumeInsideAChainGivesTheUninterruptedRows) {
         spec,
         [&built](const SweepPoint& p) {
           ++built;
-          return problem_at(p);
+          return chain_problem_at(p);
         },
         options);
     EXPECT_TRUE(summary.ok());
     ASSERT_EQ(tail.size(), 40u - first);
-    for (std::size_t k = 0; k < tail.size(); ++k) expect_same(tail[k], whole[first + k]);
+    for (std::size_t k = 0; k < tail.size(); ++k) expect_same_row(tail[k], whole[first + k]);
     // Each delivered point built twice (checked, solved); the chain's earlier points once.
     const std::size_t chain_begin = warm_chain_of(spec, first).begin;
     EXPECT_EQ(static_cast<std::size_t>(built.load()), 2 * (40 - first) + (first - chain_begin));
@@ -206,7 +206,7 @@ TEST(WarmChains, StopDeliversAPrefix) {
     seen.push_back(row.point.index);
     if (seen.size() == 3) stop = true;
   };
-  const SweepSummary summary = sweep(spec, problem_at, options);
+  const SweepSummary summary = sweep(spec, chain_problem_at, options);
   EXPECT_EQ(summary.status, Status::Incomplete);
   ASSERT_GE(seen.size(), 3u);
   EXPECT_LT(seen.size(), 40u);
