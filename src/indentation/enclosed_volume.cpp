@@ -4,20 +4,9 @@
 #include <cstddef>
 #include <vector>
 
+#include "numerics/trapezoid.hpp"
+
 namespace puncture::detail {
-
-namespace {
-
-double trapezoid(const std::vector<double>& x, const std::vector<double>& y, std::size_t stride) {
-  double sum = 0.0;
-  std::size_t i = 0;
-  for (; i + stride < x.size(); i += stride)
-    sum += 0.5 * (y[i] + y[i + stride]) * (x[i + stride] - x[i]);
-  if (i + 1 < x.size()) sum += 0.5 * (y[i] + y.back()) * (x.back() - x[i]);
-  return sum;
-}
-
-}  // namespace
 
 double enclosed_volume_mm3(const MembraneFields& m) {
   if (m.size() < 2) return 0.0;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "numerics/trapezoid.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/loading_curve.hpp"
 #include "puncture/material.hpp"
@@ -55,17 +56,7 @@ inline void record(const std::string& key, double value) {
   ::testing::Test::RecordProperty(key, fmt::format("{:.3e}", value));
 }
 
-// Trapezoid rule of y over x on the samples first, first + stride, ..., and the last (the
-// quadratures of the fields: stride 2 gives the coarse value of a Richardson step).
-inline double trapezoid(const std::vector<double>& x, const std::vector<double>& y,
-                        std::size_t stride) {
-  double sum = 0.0;
-  std::size_t i = 0;
-  for (; i + stride < x.size(); i += stride)
-    sum += 0.5 * (y[i] + y[i + stride]) * (x[i + stride] - x[i]);
-  if (i + 1 < x.size()) sum += 0.5 * (y[i] + y.back()) * (x.back() - x[i]);
-  return sum;
-}
+using detail::trapezoid;  // numerics/trapezoid.hpp
 
 inline bool all_finite(const std::vector<double>& v) {
   for (double x : v)
