@@ -18,7 +18,7 @@ export TIMED_LOG="$work/steps.log" CCACHE_DISABLE=1
 cmake -S "$work/src" -B "$work/build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CXX_COMPILER_LAUNCHER="$work/timed.sh" -DCMAKE_CXX_LINKER_LAUNCHER="$work/timed.sh" \
   "$@" > "$work/configure.log"
-cmake --build "$work/build" -j2 > "$work/build.log"
+cmake --build "$work/build" -j2 > "$work/build.log" 2>&1
 awk '{ t = $1 + $2; total += t; out = "";
        for (i = 3; i <= NF; i++) if ($i == "-o") out = $(i + 1);
        printf "%8.1f s  %s\n", t, out }
