@@ -28,7 +28,8 @@ Table points_rows(const UniaxialFitReport& r) {
 std::string joined(const std::vector<double>& values, std::string_view what) {
   std::string out;
   for (const double v : values) {
-    // Appended piece by piece: `"," + num(...)` trips a false -Wrestrict of GCC 12 (in a unity batch).
+    // Appended piece by piece: `"," + num(...)` trips a false -Wrestrict of GCC 12 (in a unity
+    // batch).
     if (!out.empty()) out += ',';
     out += num(v, what);
   }
