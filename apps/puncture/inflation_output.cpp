@@ -147,12 +147,14 @@ void inputs(std::string& out, const InflationProblem& p) {
   summary_line(out, "material", describe(p.material));
   summary_line(out, "critical I1 (burst)", num(p.critical_i1, "critical I1"));
   if (p.prestretch != 1.0)
-    summary_line(out,
-         "pre-stretch L0",
-         num(p.prestretch, "pre-stretch") + " (stress-free disc of radius A / L0 clamped at A)");
-  summary_line(out,
-       "pressure scale G H / A",
-       num(pressure_scale_mpa(p), "pressure scale") + " MPa (normalised pressure = p / this)");
+    summary_line(
+        out,
+        "pre-stretch L0",
+        num(p.prestretch, "pre-stretch") + " (stress-free disc of radius A / L0 clamped at A)");
+  summary_line(
+      out,
+      "pressure scale G H / A",
+      num(pressure_scale_mpa(p), "pressure scale") + " MPa (normalised pressure = p / this)");
 }
 
 // A pressure in the project's unit (MPa) and in kPa, the unit balloon and bulge tests are read in
@@ -170,39 +172,39 @@ std::string where_text(const InflationState& s) {
 
 void state_lines(std::string& out, const InflationState& s) {
   summary_line(out,
-       "pressure",
-       fmt::format("{} (p A / G H = {})",
-                   pressure_text(s.pressure_mpa, "pressure"),
-                   num(s.normalized_pressure, "normalised pressure")));
+               "pressure",
+               fmt::format("{} (p A / G H = {})",
+                           pressure_text(s.pressure_mpa, "pressure"),
+                           num(s.normalized_pressure, "normalised pressure")));
   summary_line(out, "pole stretch", num(s.pole_stretch, "pole stretch"));
   summary_line(out, "pole height", num(s.pole_height_mm, "pole height") + " mm");
   summary_line(out, "volume", num(s.volume_mm3, "volume") + " mm^3");
   summary_line(out, "stored energy", num(s.stored_energy_mj, "stored energy") + " mJ");
   const auto rho = bounded(s.pole_curvature_radius_mm, "pole radius of curvature");
   summary_line(out,
-       "pole radius of curvature",
-       rho ? num(*rho, "pole radius of curvature") + " mm" : "n/a (flat)");
+               "pole radius of curvature",
+               rho ? num(*rho, "pole radius of curvature") + " mm" : "n/a (flat)");
   summary_line(out, "pole tension", num(s.pole_tension_n_per_mm, "pole tension") + " N/mm (true)");
   summary_line(out,
-       "clamp",
-       fmt::format("lambda1 = {}, slope {} deg",
-                   num(s.clamp_radial_stretch, "clamp stretch"),
-                   num(s.clamp_slope_rad * 180.0 / std::numbers::pi, "clamp slope")));
+               "clamp",
+               fmt::format("lambda1 = {}, slope {} deg",
+                           num(s.clamp_radial_stretch, "clamp stretch"),
+                           num(s.clamp_slope_rad * 180.0 / std::numbers::pi, "clamp slope")));
   summary_line(out,
-       "largest I1",
-       fmt::format("{} at {}", num(s.max_first_invariant, "largest I1"), where_text(s)));
+               "largest I1",
+               fmt::format("{} at {}", num(s.max_first_invariant, "largest I1"), where_text(s)));
 }
 
 void extremum_lines(std::string& out, const PressureExtremum& e) {
   const auto& s = e.state;
   const bool max = e.kind == ExtremumKind::Maximum;
   summary_line(out,
-       max ? "pressure maximum" : "pressure minimum",
-       fmt::format("{} at pole stretch {} (height {} mm, volume {} mm^3)",
-                   pressure_text(s.pressure_mpa, "extremum pressure"),
-                   num(s.pole_stretch, "extremum pole stretch"),
-                   num(s.pole_height_mm, "extremum height"),
-                   num(s.volume_mm3, "extremum volume")));
+               max ? "pressure maximum" : "pressure minimum",
+               fmt::format("{} at pole stretch {} (height {} mm, volume {} mm^3)",
+                           pressure_text(s.pressure_mpa, "extremum pressure"),
+                           num(s.pole_stretch, "extremum pole stretch"),
+                           num(s.pole_height_mm, "extremum height"),
+                           num(s.volume_mm3, "extremum volume")));
   out += max ? "    a limit point: under pressure control the membrane snaps through here\n"
              : "    the membrane stiffens again beyond\n";
 }
@@ -328,11 +330,12 @@ std::string summary(const InflationPressureReport& r) {
                      pressure_text(a.pressure_mpa, "pressure"),
                      num(a.max_pole_stretch, "search end"),
                      r.to_burst ? "the burst" : "set by --max-pole-stretch");
-  summary_line(out,
-       "states",
-       a.states.size() == 1 ? std::string("1")
-                            : fmt::format("{}; the first is reached by inflating slowly from flat",
-                                          a.states.size()));
+  summary_line(
+      out,
+      "states",
+      a.states.size() == 1
+          ? std::string("1")
+          : fmt::format("{}; the first is reached by inflating slowly from flat", a.states.size()));
   extrema_lines(out, a.extrema);
   out += "States (--format json for their fields)\n";
   const auto rows = only(pressure_rows(a), kSummaryColumns);
