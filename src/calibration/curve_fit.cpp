@@ -23,6 +23,7 @@
 #include <numeric>
 
 #include "calibration/curve_model.hpp"
+#include "calibration/fit_verdict.hpp"
 #include "calibration/stick_threshold_profile.hpp"
 
 namespace puncture {
@@ -671,16 +672,7 @@ CurveFit fit_curves(const CurveFitProblem& problem, const CurveFitOptions& o) {
       fit.warnings.push_back(fit.message);
       return fit;
     }
-  if (fit.r_squared < o.min_r_squared) {
-    fit.status = Status::OutsideModel;
-    fit.message = fmt::format(
-        "the fitted model explains {:.3g} % of the force variance (R^2 = {:.4g} < {:g}): the "
-        "records are not force-depth curves of this model",
-        100.0 * std::max(0.0, fit.r_squared),
-        fit.r_squared,
-        o.min_r_squared);
-    return fit;
-  }
+  if (detail::outside_model_by_r_squared(fit, o.min_r_squared)) return fit;
   if (!fit.warnings.empty()) fit.message = fit.warnings.front();
   return fit;
 }

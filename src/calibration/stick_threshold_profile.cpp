@@ -13,6 +13,7 @@
 #include <map>
 
 #include "calibration/curve_model.hpp"
+#include "calibration/fit_verdict.hpp"
 #include "puncture/loading_curve.hpp"
 
 namespace puncture::detail {
@@ -117,15 +118,7 @@ CurveFit evaluate_place(const CurveTest& test, const CurveFitOptions& options) {
   fit.residual_sd_n = std::sqrt(ssr / n);
   fit.r_squared = sst > 0.0 ? 1.0 - ssr / sst : 0.0;
   fit.status = Status::Converged;
-  if (fit.r_squared < options.min_r_squared) {
-    fit.status = Status::OutsideModel;
-    fit.message = fmt::format(
-        "the model explains {:.3g} % of the force variance (R^2 = {:.4g} < {:g}): the record is "
-        "not a force-depth curve of this model",
-        100.0 * std::max(0.0, fit.r_squared),
-        fit.r_squared,
-        options.min_r_squared);
-  }
+  outside_model_by_r_squared(fit, options.min_r_squared);
   return fit;
 }
 
