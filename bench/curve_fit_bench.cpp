@@ -61,11 +61,9 @@ void BM_LoadingCurveAtRecordDepths(benchmark::State& state) {
 }
 BENCHMARK(BM_LoadingCurveAtRecordDepths)->Unit(benchmark::kMillisecond);
 
-// Argument: -log10 of the function tolerance (8, the default; 10, tighter).
-void BM_FitCurveThreeParameters(benchmark::State& state) {
-  const CurveFitProblem problem{{record(Problem{}, 1)}};
-  auto options = three_free();
-  options.function_tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+// The benchmark loop of a fit, with the curves it solved as a counter.
+void fit_repeatedly(benchmark::State& state, const CurveFitProblem& problem,
+                    const CurveFitOptions& options) {
   int curves = 0;
   for (auto _ : state) {
     const auto fit = fit_curves(problem, options);
@@ -73,6 +71,14 @@ void BM_FitCurveThreeParameters(benchmark::State& state) {
     benchmark::DoNotOptimize(fit);
   }
   state.counters["curves"] = curves;
+}
+
+// Argument: -log10 of the function tolerance (8, the default; 10, tighter).
+void BM_FitCurveThreeParameters(benchmark::State& state) {
+  const CurveFitProblem problem{{record(Problem{}, 1)}};
+  auto options = three_free();
+  options.function_tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  fit_repeatedly(state, problem, options);
 }
 BENCHMARK(BM_FitCurveThreeParameters)->Arg(8)->Arg(10)->Unit(benchmark::kMillisecond);
 
@@ -84,13 +90,7 @@ void BM_FitCurveFourTests(benchmark::State& state) {
     truth.geometry.thickness_mm = 0.2 + 0.05 * k;
     problem.tests.push_back(record(truth, static_cast<unsigned>(10 + k)));
   }
-  int curves = 0;
-  for (auto _ : state) {
-    const auto fit = fit_curves(problem, three_free());
-    curves = fit.curve_evaluations;
-    benchmark::DoNotOptimize(fit);
-  }
-  state.counters["curves"] = curves;
+  fit_repeatedly(state, problem, three_free());
 }
 BENCHMARK(BM_FitCurveFourTests)->Unit(benchmark::kMillisecond);
 
@@ -102,13 +102,7 @@ void BM_FitCurveStickThreshold(benchmark::State& state) {
   CurveFitOptions options;
   options.free = {CurveParameter::ShearModulus, CurveParameter::StickThreshold};
   const CurveFitProblem problem{{t}};
-  int curves = 0;
-  for (auto _ : state) {
-    const auto fit = fit_curves(problem, options);
-    curves = fit.curve_evaluations;
-    benchmark::DoNotOptimize(fit);
-  }
-  state.counters["curves"] = curves;
+  fit_repeatedly(state, problem, options);
 }
 BENCHMARK(BM_FitCurveStickThreshold)->Unit(benchmark::kMillisecond);
 
@@ -124,13 +118,7 @@ void BM_FitCurveContactOffset(benchmark::State& state) {
   options.free = {
       CurveParameter::ShearModulus, CurveParameter::JLim, CurveParameter::ContactOffset};
   const CurveFitProblem problem{{t}};
-  int curves = 0;
-  for (auto _ : state) {
-    const auto fit = fit_curves(problem, options);
-    curves = fit.curve_evaluations;
-    benchmark::DoNotOptimize(fit);
-  }
-  state.counters["curves"] = curves;
+  fit_repeatedly(state, problem, options);
 }
 BENCHMARK(BM_FitCurveContactOffset)->Unit(benchmark::kMillisecond);
 
