@@ -6,7 +6,10 @@
 //
 // Local unknowns, normalised by the clamp radius A: the current radius r and deflection z at the
 // element's order + 1 nodes, then the reference radii of the two ends of the element's part (the
-// part's mesh moves with them: that is how the contact boundaries are found).
+// part's mesh moves with them: that is how the contact boundaries are found).  An element lying
+// on a smooth probe's profile (rigid_profile.hpp) holds the arclength s along the profile in
+// place of r (its z values are unused): it lies on the profile at every point, not only at its
+// nodes, with lambda1 = ds/dR and lambda2 = rho(s) / R.
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
@@ -14,6 +17,7 @@
 #include <unsupported/Eigen/AutoDiff>
 #include <variant>
 
+#include "fe/rigid_profile.hpp"
 #include "puncture/material.hpp"
 
 namespace puncture::fe {
@@ -39,6 +43,7 @@ struct ElementPlace {
   bool logarithmic = false;
   double xi0 = 0.0;
   double dxi = 1.0;
+  const RigidProfile* profile = nullptr;  // set when the element lies on a probe's profile
 };
 
 // Lagrange shape functions on equally spaced nodes of [-1, 1] and their derivatives.
@@ -51,6 +56,21 @@ inline void shape_functions(int order, double eta, std::array<double, kMaxOrder 
     n = {0.5 * eta * (eta - 1.0), 1.0 - eta * eta, 0.5 * eta * (eta + 1.0)};
     dn = {eta - 0.5, -2.0 * eta, eta + 0.5};
   }
+}
+
+// rho(s) of the profile with the derivatives of s carried through (chain rule, as Eigen's own
+// sin of an AutoDiffScalar): plain, first-order and nested second-order scalars.
+inline double profile_radius(const RigidProfile& profile, double s) { return profile.radius(s); }
+inline Inner profile_radius(const RigidProfile& profile, const Inner& s) {
+  return Inner(profile.radius(s.value()), profile.radius_slope(s.value()) * s.derivatives());
+}
+inline Dual profile_radius(const RigidProfile& profile, const Dual& s) {
+  const double s0 = s.value().value();
+  const Inner slope(profile.radius_slope(s0),
+                    profile.radius_curvature(s0) * s.value().derivatives());
+  InnerVector outer;
+  for (int k = 0; k < kMaxLocal; ++k) outer[k] = slope * s.derivatives()[k];
+  return Dual(profile_radius(profile, s.value()), outer);
 }
 
 // Reference radius at xi for a part from `start` to `end`, and dR/dxi.
@@ -90,6 +110,13 @@ bool stretches_at(const ElementPlace& place, const std::array<T, kMaxLocal>& loc
     dz += local[local_z(place.order, i)] * dn[i];
   }
   using std::sqrt;
+  if (place.profile) {  // r holds the arclength along the profile
+    if (!(d_radius_d_eta > 0.0) || !(radius > 0.0) || !(dr > 0.0)) return false;
+    l1 = dr / d_radius_d_eta;
+    l2 = profile_radius(*place.profile, r) / radius;
+    weight = radius * d_radius_d_eta;
+    return l2 > 0.0;
+  }
   if (!(d_radius_d_eta > 0.0) || !(radius > 0.0) || !(r > 0.0)) return false;
   l1 = sqrt(dr * dr + dz * dz) / d_radius_d_eta;
   l2 = r / radius;

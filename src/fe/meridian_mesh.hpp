@@ -28,6 +28,8 @@ struct MeshPart {
   int elements = 0;
   Slot start, end;         // reference radii of the part's ends
   std::vector<Slot> r, z;  // per node: elements * order + 1
+  // Set for a part lying on a smooth probe: r then holds the arclength along its profile.
+  const RigidProfile* profile = nullptr;
 };
 
 struct Mesh {
@@ -54,7 +56,8 @@ inline ElementPlace gather(const Mesh& mesh, const MeshPart& part, int e, const 
   slots[local_start_radius(p)] = &part.start;
   slots[local_end_radius(p)] = &part.end;
   for (int k = 0; k < local_size(p); ++k) values[k] = value_of(*slots[k], x);
-  return ElementPlace{p, part.logarithmic, double(e) / part.elements, 1.0 / part.elements};
+  return ElementPlace{
+      p, part.logarithmic, double(e) / part.elements, 1.0 / part.elements, part.profile};
 }
 
 struct Assembly {
