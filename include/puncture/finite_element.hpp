@@ -3,9 +3,12 @@
 // membrane discretised by Lagrange finite elements along the meridian, the unknowns being the
 // current radius r and deflection z at the nodes and the reference radii where the contact with
 // the indenter begins and ends; equilibrium minimises the stored energy at a prescribed depth
-// (docs/verification.md, "The finite-element solver").  It covers the frictionless contact (tip,
-// corner and side) and the membrane held at the indenter's edge; Coulomb friction is not modelled
-// (it is dissipative: there is no energy to minimise).
+// (docs/verification.md, "The finite-element solver").  It covers the flat punch, frictionless
+// (tip, corner and side) and held at its edge, and the sphere-tipped probe, frictionless (the
+// membrane lying on its profile from the pole to a contact edge found by the method:
+// docs/model.md, "Finite elements on a smooth probe"); Coulomb friction is not modelled (it is
+// dissipative: there is no energy to minimise).  Any other probe, or the sphere-tipped probe held,
+// throws InvalidInput("indenter", ...).
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,20 +42,30 @@ struct FePart {
   int elements = 0;                   // each of `order` + 1 nodes, neighbours sharing one
   std::vector<double> radius_mm;      // current radius r at the nodes [mm]
   std::vector<double> deflection_mm;  // deflection z below the clamp plane at the nodes [mm]
+  // On a smooth probe's profile: the arclength s from the probe's pole at the nodes, the
+  // elements' unknown there (r and z follow from the profile) [mm]; empty off the probe.
+  std::vector<double> arclength_mm;
 };
 
 struct FeState : Outcome {
   FeContact contact = FeContact::Frictionless;
   int order = 2;
-  double depth_mm = 0.0;                    // prescribed indentation depth [mm]
-  double force_n = 0.0;                     // indenter force F = dU/d(depth), the reaction [N]
-  double normalized_force = 0.0;            // F / (2 pi G H A)
-  double stored_energy_nmm = 0.0;           // elastic energy U [N mm]
-  bool part_two = false;                    // the membrane wraps the indenter's side
-  double part_three_stretch = 1.0;          // a / R at the corner (1 when held)
-  double corner_reference_radius_mm = 0.0;  // R at the corner (edge of Part III)
-  double part_two_top_reference_radius_mm = 0.0;  // R where the membrane leaves the side
-  double max_first_invariant = 3.0;               // largest I1 at the quadrature points and nodes
+  double depth_mm = 0.0;           // prescribed indentation depth [mm]
+  double force_n = 0.0;            // indenter force F = dU/d(depth), the reaction [N]
+  double normalized_force = 0.0;   // F / (2 pi G H A)
+  double stored_energy_nmm = 0.0;  // elastic energy U [N mm]
+  bool part_two = false;           // the membrane wraps the indenter's (cylinder) side
+  // Flat punch: a / R at the corner (1 when held).  Smooth probe: the pole's equibiaxial stretch.
+  double part_three_stretch = 1.0;
+  // R at the corner (edge of Part III); on the sphere-tipped probe, where the contact leaves the
+  // hemisphere (the contact edge, or the equator once the side is wrapped).
+  double corner_reference_radius_mm = 0.0;
+  double part_two_top_reference_radius_mm = 0.0;  // R where the membrane leaves the probe
+  double contact_edge_radius_mm = 0.0;            // current radius r there [mm]
+  // Smooth probe: the deepest a node of the free part lies inside the probe (0 when none), the
+  // check of non-penetration [mm]; 0 for the flat punch.
+  double largest_penetration_mm = 0.0;
+  double max_first_invariant = 3.0;  // largest I1 at the quadrature points and nodes
   double max_first_invariant_reference_radius_mm = 0.0;
   int newton_iterations = 0;  // in the last depth step
   int unknowns = 0;

@@ -13,6 +13,8 @@
 #include "fe/energy_newton.hpp"
 #include "fe/meridian_mesh.hpp"
 #include "fe/part_evaluation.hpp"
+#include "fe/smooth_probe.hpp"
+#include "fe/sphere_tipped_profile.hpp"
 
 namespace puncture {
 namespace {
@@ -156,6 +158,7 @@ FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::Vector
     state.parts.push_back(std::move(out));
   }
   state.part_three_stretch = radius_mm(problem.indenter) / state.corner_reference_radius_mm;
+  state.contact_edge_radius_mm = radius_mm(problem.indenter);
   return state;
 }
 
@@ -431,11 +434,16 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
                                         const std::vector<double>& depths_mm, FeContact contact,
                                         const FeOptions& options) {
   validate(problem);
-  if (!std::holds_alternative<FlatPunch>(problem.indenter))
-    throw InvalidInput(
-        "indenter",
-        "the finite-element method is implemented for the flat punch only, not the " +
-            describe(problem.indenter));
+  const auto* sphere = std::get_if<SphereTipped>(&problem.indenter);
+  if (!std::holds_alternative<FlatPunch>(problem.indenter) && !sphere)
+    throw InvalidInput("indenter",
+                       "the finite-element method is implemented for the flat punch and the "
+                       "sphere-tipped probe only, not the " +
+                           describe(problem.indenter));
+  if (sphere && contact == FeContact::Held)
+    throw InvalidInput("indenter",
+                       "the finite elements hold the membrane at the flat punch's edge only; on "
+                       "the sphere-tipped probe they are frictionless");
   if (problem.preload.pressure_mpa > 0.0)
     throw InvalidInput(
         "preload.pressure_mpa",
@@ -452,6 +460,10 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
       throw std::invalid_argument(fmt::format(
           "depths must be finite, > 0 and increasing (got {} mm after {} mm)", d, last));
     last = d;
+  }
+  if (sphere) {
+    const fe::SphereTippedProfile profile(sphere->radius_mm / A);
+    return fe::solve_smooth_probe(problem, profile, depths_mm, options);
   }
   Scaled s;
   s.a = radius_mm(problem.indenter) / A;

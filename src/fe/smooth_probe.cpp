@@ -1,0 +1,488 @@
+// The finite elements on a smooth probe: the mesh for a contact edge at a given place on the
+// profile, the search for the edge at each depth, and the continuation in depth.
+#include "fe/smooth_probe.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "fe/energy_newton.hpp"
+#include "fe/meridian_mesh.hpp"
+#include "fe/part_evaluation.hpp"
+
+namespace puncture::fe {
+namespace {
+
+// Normalised by the stress-free clamp radius A / L0, like the profile.
+struct Scaled {
+  double depth = 0.0;  // indentation depth of the pole
+  double clamp = 1.0;  // current clamp radius: the pre-stretch L0
+};
+
+// A contact segment shorter than this fraction of the edge's arclength is merged into the one
+// before: a curvature jump that close to an element's end changes the energy by far less than
+// the elements' error.
+constexpr double kShortestSegment = 1e-6;
+
+// A node of the free part may lie inside the probe by this much (/ A) at a requested depth
+// before the state is refused.  The edge is placed where the free part leaves the profile
+// tangentially, to the root's tolerance (a departure angle ~1e-13): nodes measured at most
+// 1e-15 mm inside on the paper's membrane, 16 to 128 elements.  A continuation step on the way
+// is not checked: it is only the next step's start.
+constexpr double kPenetrationTolerance = 1e-10;
+
+// The arclengths where the contact's segments end for an edge at arclength `edge`: the profile's
+// curvature breaks before it, then the edge.
+std::vector<double> segment_ends(const RigidProfile& profile, double edge) {
+  std::vector<double> ends;
+  for (double b : profile.curvature_breaks())
+    if (b < edge * (1.0 - kShortestSegment)) ends.push_back(b);
+  ends.push_back(edge);
+  return ends;
+}
+
+// The mesh with the membrane on the profile from the pole to the arclength `edge`, then free to
+// the clamp.  Unknowns: the arclength at the inner nodes of each contact segment, the reference
+// radius at each segment's end (which material sits at a break or at the edge: frictionless),
+// and r, z at the inner nodes of the free part, whose first node is the edge's point, at the
+// depth less the profile's height there (its reaction is the force).
+Mesh build_mesh(const RigidProfile& profile, const Scaled& s, double edge,
+                const FeOptions& options) {
+  Mesh mesh;
+  mesh.order = options.order;
+  const int p = options.order;
+  const int n_free = options.elements, n_contact = std::max(2, options.elements / 4);
+  int next = 0;
+  Slot start_radius = fixed_slot(0.0);
+  double start_arclength = 0.0;
+  const std::vector<double> ends = segment_ends(profile, edge);
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const Slot end_radius = unknown_slot(next++);
+    MeshPart part{profile.segment_part(int(k)), false, n_contact, start_radius, end_radius, {}, {}};
+    part.profile = &profile;
+    for (int i = 0; i <= n_contact * p; ++i) {
+      part.r.push_back(i == 0               ? fixed_slot(start_arclength)
+                       : i == n_contact * p ? fixed_slot(ends[k])
+                                            : unknown_slot(next++));
+      part.z.push_back(fixed_slot(0.0));  // unused on the profile
+    }
+    mesh.parts.push_back(part);
+    start_radius = end_radius;
+    start_arclength = ends[k];
+  }
+  MeshPart free_part{MembranePart::Free, true, n_free, start_radius, fixed_slot(1.0), {}, {}};
+  for (int i = 0; i <= n_free * p; ++i) {
+    const bool first = i == 0, last = i == n_free * p;
+    free_part.r.push_back(first  ? fixed_slot(profile.radius(edge))
+                          : last ? fixed_slot(s.clamp)
+                                 : unknown_slot(next++));
+    free_part.z.push_back(first  ? fixed_slot(s.depth - profile.height(edge), true)
+                          : last ? fixed_slot(0.0)
+                                 : unknown_slot(next++));
+  }
+  mesh.parts.push_back(free_part);
+  mesh.unknowns = next;
+  return mesh;
+}
+
+double node_radius(bool logarithmic, int intervals, int i, double start, double end) {
+  const double xi = double(i) / intervals;
+  return logarithmic ? start * std::pow(end / start, xi) : start + xi * (end - start);
+}
+
+// The fields of a previous state at reference radius R (normalised), in whichever part holds it.
+std::optional<PointFields> point_of(const FeState& state, double R, double A) {
+  for (const FePart& part : state.parts)
+    if (auto f = evaluate_part(part, state.order, R * A)) return f;
+  return std::nullopt;
+}
+
+// The arclength along the profile of a previous state's point: its own on the contact, else the
+// closest profile point's.
+double arclength_of(const PointFields& f, const RigidProfile& profile, double depth, double A) {
+  return f.arclength >= 0.0 ? f.arclength / A
+                            : profile.closest_arclength(f.radius / A, depth - f.deflection / A);
+}
+
+// The reference radius (normalised) of the material a previous state carries to arclength
+// `target` on the profile: interpolated between its nodes, contact and free; empty when its
+// membrane does not reach it.
+std::optional<double> radius_at_arclength(const FeState& state, const RigidProfile& profile,
+                                          double target, double A) {
+  const double depth = state.depth_mm / A;
+  double r_prev = 0.0, s_prev = 0.0;
+  for (const FePart& part : state.parts)
+    for (std::size_t i = 0; i < part.radius_mm.size(); ++i) {
+      const double R = node_radius(part.logarithmic,
+                                   part.elements * state.order,
+                                   int(i),
+                                   part.start_radius_mm / A,
+                                   part.end_radius_mm / A);
+      const double s =
+          part.arclength_mm.empty()
+              ? profile.closest_arclength(part.radius_mm[i] / A, depth - part.deflection_mm[i] / A)
+              : part.arclength_mm[i] / A;
+      if (s >= target && R > r_prev)
+        return s > s_prev ? r_prev + (R - r_prev) * (target - s_prev) / (s - s_prev) : R;
+      r_prev = R;
+      s_prev = s;
+    }
+  return std::nullopt;
+}
+
+// The arclength of a state's contact edge [mm]: the end of its last part on the profile.
+double edge_arclength_mm(const FeState& state) {
+  double edge = 0.0;
+  for (const FePart& part : state.parts)
+    if (!part.arclength_mm.empty()) edge = part.arclength_mm.back();
+  return edge;
+}
+
+// Starting values for `mesh` (edge at `edge`): from a previous state, material point by material
+// point (on the contact its arclength if they keep their order, else evenly spaced; off it its
+// position plus the move that
+// puts the free part's first node on the new edge, fading as ln R to the clamp), else the flat
+// membrane with a cone in ln R off an unstretched cap.
+Eigen::VectorXd starting_guess(const Mesh& mesh, const RigidProfile& profile, const Scaled& s,
+                               double edge, const FeState* previous, double A) {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(mesh.unknowns);
+  const double old_depth = previous ? previous->depth_mm / A : 0.0;
+  const double edge_r = profile.radius(edge), edge_z = s.depth - profile.height(edge);
+  // The segments' end radii first: the parts' maps depend on them.
+  double last_end = 0.0;
+  for (const MeshPart& part : mesh.parts) {
+    if (!part.profile) break;
+    const double target = part.r.back().value;
+    std::optional<double> R =
+        previous ? radius_at_arclength(*previous, profile, target, A) : std::nullopt;
+    double guess = R ? *R : target / s.clamp;
+    if (!R && previous)  // beyond the previous membrane's reach: stretch its material map
+      guess = previous->part_two_top_reference_radius_mm * target / edge_arclength_mm(*previous);
+    guess = std::clamp(guess, last_end + 1e-9, 0.999);
+    x[part.end.index] = guess;
+    last_end = guess;
+  }
+  double shift_r = 0.0, shift_z = 0.0;  // the previous state's point at the edge to the edge
+  for (const MeshPart& part : mesh.parts) {
+    const double start = value_of(part.start, x), end = value_of(part.end, x);
+    const int intervals = part.elements * mesh.order;
+    double s_prev = part.r.front().value;
+    bool monotone = true;  // the previous arclengths keep the order of the nodes
+    if (!part.profile && previous)
+      if (const auto old = point_of(*previous, start, A)) {
+        shift_r = edge_r - old->radius / A;
+        shift_z = edge_z - old->deflection / A;
+      }
+    for (int i = 0; i <= intervals; ++i) {
+      const double R = node_radius(part.logarithmic, intervals, i, start, end);
+      const std::optional<PointFields> old = previous ? point_of(*previous, R, A) : std::nullopt;
+      if (part.profile) {
+        if (part.r[i].index < 0) continue;
+        const double arclength = old ? arclength_of(*old, profile, old_depth, A) : -1.0;
+        x[part.r[i].index] = arclength;
+        monotone = monotone && arclength > s_prev && arclength < part.r.back().value;
+        s_prev = arclength;
+        continue;
+      }
+      const double fade = std::log(R) / std::log(start);  // 1 at the edge, 0 at the clamp
+      double r = R * s.clamp, z = edge_z * fade;
+      if (old) {
+        r = old->radius / A + shift_r * fade;
+        z = old->deflection / A + shift_z * fade;
+      }
+      if (part.r[i].index >= 0) x[part.r[i].index] = r;
+      if (part.z[i].index >= 0) x[part.z[i].index] = std::min(z, edge_z);
+    }
+    if (part.profile && !monotone)  // else evenly spaced in arclength
+      for (int i = 1; i < intervals; ++i)
+        x[part.r[i].index] = part.r.front().value +
+                             (part.r.back().value - part.r.front().value) * double(i) / intervals;
+  }
+  return x;
+}
+
+// Where the largest I1 is looked for in each element: both ends and the quadrature points.
+const std::array<double, 7> kSamplePoints = [] {
+  std::array<double, 7> etas{-1.0, 1.0};
+  for (std::size_t k = 0; k < gauss_points().size(); ++k) etas[k + 2] = gauss_points()[k].first;
+  return etas;
+}();
+
+// The converged state in physical units.
+FeState make_state(const Problem& problem, const RigidProfile& profile, const Mesh& mesh,
+                   const Eigen::VectorXd& x, const Assembly& assembly, const Scaled& s) {
+  const double A = reference_clamp_radius_mm(problem);
+  FeState state;
+  state.contact = FeContact::Frictionless;
+  state.order = mesh.order;
+  state.depth_mm = s.depth * A;
+  state.normalized_force = assembly.reaction / s.clamp;
+  state.force_n = assembly.reaction * (force_scale_n(problem) / s.clamp);
+  state.stored_energy_nmm = assembly.energy * 2.0 * std::numbers::pi *
+                            problem.material.shear_modulus_mpa * problem.geometry.thickness_mm * A *
+                            A;
+  state.unknowns = mesh.unknowns;
+  int segments = 0;
+  for (const MeshPart& part : mesh.parts) {
+    FePart out;
+    out.part = part.part;
+    out.logarithmic = part.logarithmic;
+    out.elements = part.elements;
+    out.start_radius_mm = value_of(part.start, x) * A;
+    out.end_radius_mm = value_of(part.end, x) * A;
+    for (std::size_t i = 0; i < part.r.size(); ++i) {
+      const double r = value_of(part.r[i], x), z = value_of(part.z[i], x);
+      if (part.profile) {
+        out.arclength_mm.push_back(r * A);
+        out.radius_mm.push_back(profile.radius(r) * A);
+        out.deflection_mm.push_back((s.depth - profile.height(r)) * A);
+      } else {
+        out.radius_mm.push_back(r * A);
+        out.deflection_mm.push_back(z * A);
+        const double inside = -profile.gap(r, s.depth - z) * A;
+        state.largest_penetration_mm = std::max(state.largest_penetration_mm, inside);
+      }
+    }
+    if (part.profile) {
+      if (segments == 0) state.corner_reference_radius_mm = out.end_radius_mm;
+      ++segments;
+    } else {
+      state.part_two_top_reference_radius_mm = out.start_radius_mm;
+      state.contact_edge_radius_mm = out.radius_mm.front();
+    }
+    // Largest I1 at the quadrature points and at both ends of every element (the pole, R = 0,
+    // below).
+    std::array<double, kMaxLocal> values;
+    std::array<const Slot*, kMaxLocal> slots;
+    for (int e = 0; e < part.elements; ++e) {
+      const ElementPlace place = gather(mesh, part, e, x, values, slots);
+      for (double eta : kSamplePoints) {
+        double l1, l2, radius, weight;
+        if (!stretches_at(place, values, eta, l1, l2, radius, weight)) continue;
+        const double i1 = first_invariant(l1, l2);
+        if (i1 > state.max_first_invariant) {
+          state.max_first_invariant = i1;
+          state.max_first_invariant_reference_radius_mm = radius * A;
+        }
+      }
+    }
+    state.parts.push_back(std::move(out));
+  }
+  state.part_two = segments > 1;
+  // The pole's equibiaxial stretch, ds/dR at R = 0.
+  const FePart& cap = state.parts.front();
+  const auto pole = evaluate_part(cap, mesh.order, 0.0);
+  state.part_three_stretch = pole ? pole->l1 : 1.0;
+  const double pole_i1 = first_invariant(state.part_three_stretch, state.part_three_stretch);
+  if (pole_i1 >= state.max_first_invariant) {
+    state.max_first_invariant = pole_i1;
+    state.max_first_invariant_reference_radius_mm = 0.0;
+  }
+  return state;
+}
+
+struct StepResult : Outcome {
+  FeState state;
+  double edge = 0.0;  // arclength of the contact edge (normalised)
+};
+
+// The direction in which the free part leaves the edge against the profile's outward normal
+// there (the sine of the angle between the free part and the profile's tangent): < 0 when it
+// enters the probe (the edge is too close to the pole), > 0 when it kinks outward (too far).
+double departure_angle(const FeState& state, const RigidProfile& profile, double edge) {
+  const FePart& free_part = state.parts.back();
+  std::array<double, kMaxOrder + 1> n{}, dn{};
+  shape_functions(state.order, -1.0, n, dn);
+  double dr = 0.0, dz = 0.0;
+  for (int i = 0; i <= state.order; ++i) {
+    dr += dn[i] * free_part.radius_mm[i];
+    dz += dn[i] * free_part.deflection_mm[i];
+  }
+  double nr, ny;
+  outward_normal(profile, edge, nr, ny);
+  return (nr * dr - ny * dz) / std::hypot(dr, dz);  // the height rises as z falls
+}
+
+// Minimises the energy with the contact edge at arclength `edge`, from `start` (or the flat
+// membrane).
+StepResult solve_at_edge(const Problem& problem, const RigidProfile& profile, const Scaled& s,
+                         double edge, const FeState* start, const FeOptions& options) {
+  const Mesh mesh = build_mesh(profile, s, edge, options);
+  Eigen::VectorXd x =
+      starting_guess(mesh, profile, s, edge, start, reference_clamp_radius_mm(problem));
+  const NewtonResult newton =
+      minimise_energy(problem.material.law, mesh, x, options.max_newton_iterations);
+  StepResult step;
+  step.status = newton.status;
+  step.message = newton.message;
+  step.edge = edge;
+  if (newton.ok()) {
+    step.state = make_state(problem, profile, mesh, x, newton.assembly, s);
+    step.state.newton_iterations = newton.iterations;
+    step.state.status = Status::Converged;
+  }
+  return step;
+}
+
+// The state at depth s.depth, its contact edge found by the method.  With the edge prescribed,
+// the energy's minimum over everything else, E(edge), is not minimal at the true edge: the free
+// part may enter the probe, so E falls as the edge moves towards the pole, and dE/d(edge)
+// vanishes there without changing sign (as for the flat punch's wrapped side,
+// docs/verification.md).  The free part leaves the profile tangentially there instead: it enters
+// the probe (departure_angle < 0) for an edge closer to the pole and kinks outward (> 0) beyond,
+// which brackets the edge, and TOMS 748 finds the tangency.  Since dE/d(edge) = d2E/d(edge)2 = 0
+// there at every depth, the force dE/d(depth) is stationary in the edge's place, so the
+// tangency's own discretisation error enters the force only squared: it converges at the
+// elements' full order (h^4, docs/model.md).
+StepResult solve_step(const Problem& problem, const RigidProfile& profile, const Scaled& s,
+                      const FeState* previous, double previous_edge, const FeOptions& options,
+                      bool precise) {
+  std::optional<FeState> latest;  // the latest state at this depth starts the next
+  StepResult last;
+  auto angle_at = [&](double edge) {
+    if (!(edge > 0.0) || !(profile.height(edge) < s.depth))
+      throw std::runtime_error("the contact edge would reach the clamp plane");
+    last = solve_at_edge(problem, profile, s, edge, latest ? &*latest : previous, options);
+    if (!last.ok()) throw std::runtime_error(last.message);
+    latest = last.state;
+    return departure_angle(last.state, profile, edge);
+  };
+  try {
+    const double angle = angle_at(previous_edge);
+    if (!precise) {
+      // A continuation step on the way: one secant step towards the tangency starts the next
+      // step well; the requested depths are solved precisely.
+      const double other = angle < 0.0 ? 1.05 * previous_edge : previous_edge / 1.05;
+      const double angle_other = angle_at(other);
+      if (angle_other != angle) {
+        const double secant = other - angle_other * (other - previous_edge) / (angle_other - angle);
+        if (secant > 0.5 * std::min(previous_edge, other) &&
+            secant < 2.0 * std::max(previous_edge, other)) {
+          angle_at(secant);
+          return last;
+        }
+      }
+    }
+    // Bracket the tangency by steps small enough for each solution to start the next.
+    double lo = previous_edge, hi = previous_edge, angle_lo = angle, angle_hi = angle;
+    constexpr double factor = 1.25;
+    for (int k = 0; k < 200 && (angle_lo >= 0.0 || angle_hi <= 0.0); ++k) {
+      if (angle_hi <= 0.0) {
+        lo = hi, angle_lo = angle_hi;
+        hi *= factor;
+        angle_hi = angle_at(hi);
+      } else {
+        hi = lo, angle_hi = angle_lo;
+        lo /= factor;
+        angle_lo = angle_at(lo);
+      }
+    }
+    if (!(angle_lo < 0.0 && angle_hi > 0.0)) {
+      StepResult none;
+      none.message = "no contact edge where the membrane leaves the probe tangentially";
+      return none;
+    }
+    // The tangency, to a few ulps of the edge's arclength.
+    boost::uintmax_t root_iterations = 100;
+    const auto tangency =
+        boost::math::tools::toms748_solve(angle_at,
+                                          lo,
+                                          hi,
+                                          angle_lo,
+                                          angle_hi,
+                                          boost::math::tools::eps_tolerance<double>(40),
+                                          root_iterations);
+    angle_at(0.5 * (tangency.first + tangency.second));
+  } catch (const std::runtime_error& e) {
+    StepResult failed;
+    failed.message = e.what();
+    return failed;
+  }
+  return last;
+}
+
+// A first guess of the contact edge on the flat membrane's first step: where the profile rises
+// a quarter of the depth above the pole.
+double first_edge_guess(const RigidProfile& profile, double depth) {
+  double lo = 0.0, hi = 1e-3;
+  while (profile.height(hi) < 0.25 * depth) lo = hi, hi *= 2.0;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (profile.height(mid) < 0.25 * depth ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+std::vector<FeState> solve_smooth_probe(const Problem& problem, const RigidProfile& profile,
+                                        const std::vector<double>& depths_mm,
+                                        const FeOptions& options) {
+  const double A = reference_clamp_radius_mm(problem);
+  Scaled s;
+  s.clamp = problem.preload.prestretch;
+  std::vector<FeState> states;
+  std::optional<FeState> previous;
+  double depth = 0.0, step = options.max_depth_step, edge = 0.0;
+  for (double target_mm : depths_mm) {
+    const double target = target_mm / A;
+    int halvings = 0;
+    std::string failure;
+    while (depth < target && failure.empty()) {
+      s.depth = std::min(target, depth + step);
+      if (target - s.depth < 1e-3 * step) s.depth = target;  // no sliver of a last step
+      const double start_edge = previous ? edge : first_edge_guess(profile, s.depth);
+      StepResult result = solve_step(problem,
+                                     profile,
+                                     s,
+                                     previous ? &*previous : nullptr,
+                                     start_edge,
+                                     options,
+                                     s.depth == target);
+      if (result.ok() && s.depth == target &&
+          result.state.largest_penetration_mm > kPenetrationTolerance * A) {
+        result.status = Status::NoConvergence;
+        result.message = fmt::format(
+            "the free membrane enters the probe by {:.3g} mm (too few elements for this state?)",
+            result.state.largest_penetration_mm);
+      }
+      if (result.ok()) {
+        depth = s.depth;
+        edge = result.edge;
+        previous = std::move(result.state);
+        step = std::min(2.0 * step, options.max_depth_step);
+      } else if (++halvings > options.max_step_halvings) {
+        failure = fmt::format(
+            "no equilibrium found beyond depth {:.6g} mm: {}", depth * A, result.message);
+        const double lock = locking_first_invariant(problem.material.law);
+        if (previous && std::isfinite(lock))
+          failure += fmt::format(" (largest I1 there {:.4g}; the material locks at {:.4g})",
+                                 previous->max_first_invariant,
+                                 lock);
+      } else {
+        step *= 0.5;
+      }
+    }
+    if (!failure.empty()) {
+      FeState failed;
+      failed.contact = FeContact::Frictionless;
+      failed.message = failure;
+      for (std::size_t k = states.size(); k < depths_mm.size(); ++k) {
+        failed.depth_mm = depths_mm[k];
+        states.push_back(failed);
+      }
+      return states;
+    }
+    states.push_back(*previous);
+  }
+  return states;
+}
+
+}  // namespace puncture::fe
