@@ -79,15 +79,28 @@ std::string summary_text(const StateReport& r) {
 std::string summary_text(const VerifyReport& r) {
   const VerificationReport& v = r.verification;
   std::string out = full_report(r.problem);
-  out += fmt::format(
-      "Verification: the shooting solver against independent methods\n"
-      "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
-      "  for their own error), minimising the stored energy; it covers the two limits of\n"
-      "  the friction, mu' = 0 and the membrane held at the indenter's edge.  Friction in\n"
-      "  between (mu' = {} here) is checked by the test suite's Coulomb and capstan identities.\n",
-      v.elements,
-      v.elements / 2,
-      num(r.problem.friction, "friction"));
+  if (std::holds_alternative<SphereTipped>(r.problem.indenter))
+    out += fmt::format(
+        "Verification: the shooting solver against independent methods\n"
+        "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
+        "  for their own error), the membrane lying on the probe's profile up to a contact\n"
+        "  edge the method finds, minimising the stored energy at mu' = 0.  The probe has no\n"
+        "  stick stage and no small-deflection (Foppl) check; friction (mu' = {} here) is\n"
+        "  checked by the test suite's Coulomb identities.\n",
+        v.elements,
+        v.elements / 2,
+        num(r.problem.friction, "friction"));
+  else
+    out += fmt::format(
+        "Verification: the shooting solver against independent methods\n"
+        "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
+        "  for their own error), minimising the stored energy; it covers the two limits of\n"
+        "  the friction, mu' = 0 and the membrane held at the indenter's edge.  Friction in\n"
+        "  between (mu' = {} here) is checked by the test suite's Coulomb and capstan "
+        "identities.\n",
+        v.elements,
+        v.elements / 2,
+        num(r.problem.friction, "friction"));
   out += full_report(v);
   if (!v.ok()) out += "(tolerances and their reasons: --format csv or json)\n";
   return out;
