@@ -424,7 +424,8 @@ TEST(SphereTipped, PunctureAtThePole) {
 // What is not implemented is refused, never answered otherwise: a stick rule is a validation
 // error naming the parameter (the contact model's plan says so too); with friction, a contact
 // reaching the cylinder side is a status, not a frictionless or frictional number; the finite
-// elements (flat punch only) throw.
+// elements hold the membrane at the flat punch's edge only (held on this probe: they throw; they
+// are checked frictionless in tests/verification/finite_element_sphere_test.cpp).
 TEST(SphereTipped, StickAndFrictionOnTheSideAreRefused) {
   Problem held = sphere_problem();
   held.stick = {StickRule::Always, 0.0};
@@ -445,7 +446,7 @@ TEST(SphereTipped, StickAndFrictionOnTheSideAreRefused) {
   EXPECT_FALSE(pp.ok());
   std::cout << "friction 0.18: " << pp.message << "\n";
 
-  EXPECT_THROW(fe_solve_at_depth(sphere_problem(), 5.0, FeContact::Frictionless), InvalidInput);
+  EXPECT_THROW(fe_solve_at_depth(sphere_problem(), 5.0, FeContact::Held), InvalidInput);
 }
 
 // Coulomb slip on the hemisphere (docs/model.md, §15): the pressure's and the friction's axial

@@ -60,6 +60,30 @@ TEST(Verify, PassesOnAPrestretchedMembrane) {
   EXPECT_EQ(r.count(Verdict::Pass), int(r.checks.size()));
 }
 
+// The sphere-tipped probe: the frictionless limit against the finite elements on its profile
+// (force, pole stretch, contact edge, largest I1 at each depth, and the work), with the user's
+// friction replaced by mu' = 0; no held limit (the probe has no stick stage) and no Foppl rows
+// (the flat punch's disc).
+TEST(Verify, PassesOnTheSphereTippedProbe) {
+  VerifyOptions options;
+  options.elements = 64;
+  options.depths = 2;
+  Problem p;
+  p.indenter = SphereTipped{2.0};
+  const VerificationReport r = verify(p, options);
+  for (const auto& c : r.checks)
+    EXPECT_EQ(c.verdict, Verdict::Pass) << c.group << " " << c.quantity << " " << c.condition
+                                        << ": " << c.difference << " (" << c.note << ")";
+  EXPECT_TRUE(r.ok()) << r.message;
+  EXPECT_EQ(count_quantity(r, "frictionless", "force [N]"), 2);
+  EXPECT_EQ(count_quantity(r, "frictionless", "pole stretch"), 2);
+  EXPECT_EQ(count_quantity(r, "frictionless", "contact edge R [mm]"), 2);
+  EXPECT_EQ(count_quantity(r, "frictionless", "largest I1"), 2);
+  EXPECT_EQ(count_quantity(r, "frictionless", "work of F = stored energy [N mm]"), 1);
+  EXPECT_EQ(count_quantity(r, "frictionless", "Part III stretch"), 0);
+  EXPECT_EQ(int(r.checks.size()), 9);  // nothing held, no small-deflection rows
+}
+
 // With mu' = 0 the printed Eq. (18) keeps s1 constant along Part II, the energy R s1
 // (docs/model.md §4): once the membrane wraps the side the forces differ by percents.
 TEST(Verify, FailsForThePrintedPartTwoEquation) {
