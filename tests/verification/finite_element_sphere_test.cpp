@@ -117,7 +117,7 @@ TEST_P(FiniteElementSphereTipped, MatchesShootingOverTheLoadingRange) {
   // measured at most 1.9e-4 (neo-Hookean at its puncture, Lambda = 6.9).
   EXPECT_LT(worst_pole, 5e-4);
   // The edge's place converges as O(h^2) (the tangency of the free part, a derivative): measured
-  // at most 3.5e-5 in R (the 0.5 mm probe), 1.6e-5 in r.
+  // at most 3.5e-5 in R (the 0.5 mm probe), 1.4e-5 in r.
   EXPECT_LT(worst_edge, 1e-4);
   EXPECT_LT(worst_edge_radius, 1e-4);
   // The largest I1, a derivative too (at the pole or on the cap): measured at most 3.8e-4.
