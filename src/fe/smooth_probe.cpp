@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -147,9 +146,8 @@ double edge_arclength_mm(const FeState& state) {
 
 // Starting values for `mesh` (edge at `edge`): from a previous state, material point by material
 // point (on the contact its arclength if they keep their order, else evenly spaced; off it its
-// position plus the move that
-// puts the free part's first node on the new edge, fading as ln R to the clamp), else the flat
-// membrane with a cone in ln R off an unstretched cap.
+// position plus the move that puts the free part's first node on the new edge, fading as ln R
+// to the clamp), else the flat membrane with a cone in ln R off an unstretched cap.
 Eigen::VectorXd starting_guess(const Mesh& mesh, const RigidProfile& profile, const Scaled& s,
                                double edge, const FeState* previous, double A) {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(mesh.unknowns);
