@@ -48,7 +48,11 @@ void bind_verification(py::module_& m) {
       .def_property_readonly(
           "deflection_mm",
           [](py::object self) { return view(self.cast<const FePart&>().deflection_mm, self); },
-          "deflection z at the nodes [mm]");
+          "deflection z at the nodes [mm]")
+      .def_property_readonly(
+          "arclength_mm",
+          [](py::object self) { return view(self.cast<const FePart&>().arclength_mm, self); },
+          "on a smooth probe's profile: arclength from the pole at the nodes [mm] (else empty)");
 
   py::class_<FeState, Outcome>(m, "FeState", "A finite-element equilibrium at a prescribed depth")
       .def_readonly("contact", &FeState::contact)
@@ -61,6 +65,12 @@ void bind_verification(py::module_& m) {
       .def_readonly("part_three_stretch", &FeState::part_three_stretch)
       .def_readonly("corner_reference_radius_mm", &FeState::corner_reference_radius_mm)
       .def_readonly("part_two_top_reference_radius_mm", &FeState::part_two_top_reference_radius_mm)
+      .def_readonly("contact_edge_radius_mm",
+                    &FeState::contact_edge_radius_mm,
+                    "current radius where the membrane leaves the probe [mm]")
+      .def_readonly("largest_penetration_mm",
+                    &FeState::largest_penetration_mm,
+                    "smooth probe: deepest free node inside the probe [mm] (0 when none)")
       .def_readonly("max_first_invariant", &FeState::max_first_invariant)
       .def_readonly("unknowns", &FeState::unknowns)
       .def_readonly("parts", &FeState::parts)

@@ -40,6 +40,32 @@ def test_finite_elements_agree_with_the_shooting():
     assert last.first_invariant(3, 10.0) is None
 
 
+def test_finite_elements_on_the_sphere_tipped_probe():
+    problem = pu.Problem()
+    problem.indenter = pu.SphereTipped(2.0)
+    problem.friction = 0.0
+    states = pu.fe_solve_at_depths(problem, [10.0, 20.0], pu.FeContact.Frictionless, elements=64)
+    for s in states:
+        assert s.ok, s.message
+        e = pu.solve_at_depth(problem, s.depth_mm, "slip")
+        # 64 quadratic elements: the force within ~2e-7 of the shooting's (docs/model.md §15.1),
+        # the pole stretch (a derivative, O(h^2)) within ~2e-4.
+        assert s.force_n == pytest.approx(e.force_n, rel=2e-6)
+        assert s.part_three_stretch == pytest.approx(e.part_three_stretch, rel=1e-3)
+        assert s.largest_penetration_mm <= 1e-9
+    # The cap on the hemisphere, then past the equator the side too; both on the profile.
+    assert not states[0].part_two and states[1].part_two
+    assert [p.part for p in states[1].parts] == [3, 2, 1]
+    assert len(states[1].parts[0].arclength_mm) == len(states[1].parts[0].radius_mm)
+    assert len(states[1].parts[2].arclength_mm) == 0
+    assert states[1].contact_edge_radius_mm == pytest.approx(2.0)
+    report = pu.verify(problem, elements=32, depths=1)
+    assert report.ok, report.message
+    assert "pole stretch" in [c.quantity for c in report.checks]
+    with pytest.raises(ValueError, match="flat punch's edge only"):
+        pu.fe_solve_at_depths(problem, [5.0], pu.FeContact.Held)
+
+
 def test_errors_are_value_errors():
     with pytest.raises(ValueError, match="order"):
         pu.fe_solve_at_depths(pu.Problem(), [5.0], order=3)
