@@ -410,7 +410,7 @@ StepResult solve_step(const Problem& problem, const RigidProfile& profile, const
 // a quarter of the depth above the pole.
 double first_edge_guess(const RigidProfile& profile, double depth) {
   double lo = 0.0, hi = 1e-3;
-  while (profile.height(hi) < 0.25 * depth) lo = hi, hi *= 2.0;
+  for (int k = 0; k < 200 && profile.height(hi) < 0.25 * depth; ++k) lo = hi, hi *= 2.0;
   for (int k = 0; k < 60; ++k) {
     const double mid = 0.5 * (lo + hi);
     (profile.height(mid) < 0.25 * depth ? lo : hi) = mid;
