@@ -25,7 +25,8 @@ enum class FeContact {
 };
 
 struct FeOptions {
-  int elements = 64;  // elements along the free part (Part I); Parts II and III get a quarter each
+  int elements = 64;  // along the free part (Part I); Parts II, III (a smooth probe: each contact
+                      // segment, cap and side) get a quarter each
   int order = 2;      // polynomial order of the elements: 1 (linear) or 2 (quadratic)
   int max_newton_iterations = 60;  // per depth step
   int max_step_halvings = 16;      // continuation in depth: refinements of one step before failing
