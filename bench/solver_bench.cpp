@@ -5,6 +5,8 @@
 //   BM_EquilibriumAtDepth  one equilibrium at a prescribed depth (nested bracketing)
 //   BM_PunctureDefault     the puncture point alone
 //   BM_LoadingCurveDefault the loading curve, 200 depth points from zero to puncture
+//   BM_LoadingCurveFlatFrictionless, BM_LoadingCurveSphereTipped  the same without friction, for
+//                          the flat punch and the sphere-tipped probe of radius 2 mm
 //   BM_LoadingCurveStick.. the same with a stick stage: held until 0.3 N (the switch is one
 //                          solve at that force), or until the edge tension reaches 0.02 N/mm
 //                          (the switch is a root search over the force)
@@ -57,10 +59,8 @@ void BM_PunctureDefault(benchmark::State& state) {
 }
 BENCHMARK(BM_PunctureDefault)->Unit(benchmark::kMillisecond);
 
-// The loading curve, 200 depth points to puncture, with a stick rule (none: the default).
-void loading_curve_benchmark(benchmark::State& state, StickCriterion stick) {
-  Problem problem;
-  problem.stick = stick;
+// The loading curve of `problem`, 200 depth points to puncture.
+void loading_curve_benchmark(benchmark::State& state, const Problem& problem) {
   CurveOptions curve;
   curve.points = 200;
   std::size_t points = 0;
@@ -72,16 +72,42 @@ void loading_curve_benchmark(benchmark::State& state, StickCriterion stick) {
   state.counters["points"] = static_cast<double>(points);
 }
 
+// The default problem with a stick rule (none: the default).
+Problem with_stick(StickCriterion stick) {
+  Problem problem;
+  problem.stick = stick;
+  return problem;
+}
+
+// The default membrane without friction, pushed by `indenter`.
+Problem frictionless(Indenter indenter) {
+  Problem problem;
+  problem.friction = 0.0;
+  problem.indenter = indenter;
+  return problem;
+}
+
 void BM_LoadingCurveDefault(benchmark::State& state) { loading_curve_benchmark(state, {}); }
 BENCHMARK(BM_LoadingCurveDefault)->Unit(benchmark::kMillisecond);
 
+// Frictionless, the flat punch and the sphere-tipped probe of the same radius (2 mm): the smooth
+// probe's curve should cost at most twice the flat punch's.
+void BM_LoadingCurveFlatFrictionless(benchmark::State& state) {
+  loading_curve_benchmark(state, frictionless(FlatPunch{2.0}));
+}
+BENCHMARK(BM_LoadingCurveFlatFrictionless)->Unit(benchmark::kMillisecond);
+void BM_LoadingCurveSphereTipped(benchmark::State& state) {
+  loading_curve_benchmark(state, frictionless(SphereTipped{2.0}));
+}
+BENCHMARK(BM_LoadingCurveSphereTipped)->Unit(benchmark::kMillisecond);
+
 // A curve with a stick stage: the switch located by the stick rule, then both sides of it.
 void BM_LoadingCurveStickForce(benchmark::State& state) {
-  loading_curve_benchmark(state, {StickRule::Force, 0.3});
+  loading_curve_benchmark(state, with_stick({StickRule::Force, 0.3}));
 }
 BENCHMARK(BM_LoadingCurveStickForce)->Unit(benchmark::kMillisecond);
 void BM_LoadingCurveStickEdgeTension(benchmark::State& state) {
-  loading_curve_benchmark(state, {StickRule::EdgeTension, 0.02});
+  loading_curve_benchmark(state, with_stick({StickRule::EdgeTension, 0.02}));
 }
 BENCHMARK(BM_LoadingCurveStickEdgeTension)->Unit(benchmark::kMillisecond);
 

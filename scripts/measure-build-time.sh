@@ -3,7 +3,7 @@
 # summed (the machine's load changes the wall time, much less the CPU time).  Builds a clean
 # clone of HEAD in a temporary directory without ccache, with -j2 as the README does.
 #   scripts/measure-build-time.sh [extra cmake arguments]
-# Prints the total and the ten costliest steps.
+# Prints the total and the ten costliest steps; MEASURE_LOG=file keeps every step's time.
 set -eu
 repo=$(git rev-parse --show-toplevel)
 work=$(mktemp -d)
@@ -19,6 +19,7 @@ cmake -S "$work/src" -B "$work/build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CXX_COMPILER_LAUNCHER="$work/timed.sh" -DCMAKE_CXX_LINKER_LAUNCHER="$work/timed.sh" \
   "$@" > "$work/configure.log"
 cmake --build "$work/build" -j2 > "$work/build.log" 2>&1
+if [ -n "${MEASURE_LOG:-}" ]; then cp "$TIMED_LOG" "$MEASURE_LOG"; fi
 awk '{ t = $1 + $2; total += t; out = "";
        for (i = 3; i <= NF; i++) if ($i == "-o") out = $(i + 1);
        printf "%8.1f s  %s\n", t, out }

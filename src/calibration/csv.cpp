@@ -8,16 +8,14 @@
 #include <sstream>
 #include <system_error>
 
+#include "calibration/text_fields.hpp"
+
 namespace puncture {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t");
-  return s.substr(first, last - first + 1);
-}
+using detail::shown;
+using detail::trim;
 
 std::vector<std::string_view> split_fields(std::string_view line) {
   std::vector<std::string_view> fields;
@@ -29,13 +27,6 @@ std::vector<std::string_view> split_fields(std::string_view line) {
     start = comma + 1;
   }
   return fields;
-}
-
-// Too long a field is cut in messages, so one bad cell cannot flood the terminal.
-std::string shown(std::string_view field) {
-  constexpr std::size_t kMax = 40;
-  if (field.size() <= kMax) return std::string(field);
-  return std::string(field.substr(0, kMax)) + "...";
 }
 
 double parse_number(std::string_view field, const std::string& where, int line, int column) {

@@ -12,16 +12,16 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "calibration/text_fields.hpp"
+
 namespace puncture {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\"");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\"");
-  return s.substr(first, last - first + 1);
-}
+using detail::shown;
+
+// A field without its blanks and quotes.
+std::string_view trim_quoted(std::string_view s) { return detail::trim(s, " \t\""); }
 
 std::vector<std::string_view> split(std::string_view line, char separator) {
   std::vector<std::string_view> fields;
@@ -29,17 +29,11 @@ std::vector<std::string_view> split(std::string_view line, char separator) {
   while (true) {
     const auto at = line.find(separator, start);
     // A tab-separated line keeps its tabs out of the fields' trimming only between fields.
-    fields.push_back(trim(line.substr(start, at - start)));
+    fields.push_back(trim_quoted(line.substr(start, at - start)));
     if (at == std::string_view::npos) break;
     start = at + 1;
   }
   return fields;
-}
-
-std::string shown(std::string_view field) {
-  constexpr std::size_t kMax = 40;
-  if (field.size() <= kMax) return std::string(field);
-  return std::string(field.substr(0, kMax)) + "...";
 }
 
 // A finite decimal number ("1.5", "-2e-3", "+4", with a decimal comma "1,5"); empty otherwise.
