@@ -192,6 +192,16 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "probe's hemisphere) [mm] (> 0 and smaller than the clamp radius)")
           ->group(kGeometry)
           ->capture_default_str();
+  f.fillet_radius_option =
+      app.add_option("--fillet-radius",
+                     f.fillet_radius_mm,
+                     "Radius rho of the flat punch's rounded corner (a toroidal fillet\n"
+                     "between the flat face, of radius a - rho, and the cylinder) [mm]\n"
+                     "(>= 0 and smaller than --indenter-radius; 0: the paper's sharp\n"
+                     "corner; > 0: sliding only, --stick none, no gas pressure; with\n"
+                     "--friction > 0 only while the contact stays on the fillet)")
+          ->group(kGeometry)
+          ->capture_default_str();
   app.add_option("--thickness", f.thickness_mm, "Undeformed membrane thickness H [mm] (> 0)")
       ->group(kGeometry)
       ->capture_default_str();
@@ -394,11 +404,16 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   if (f.indenter == "sphere-tipped")
     p.indenter = SphereTipped{f.indenter_radius_mm};
   else
-    p.indenter = FlatPunch{f.indenter_radius_mm};
+    p.indenter = FlatPunch{f.indenter_radius_mm, f.fillet_radius_mm};
+  if (f.indenter == "sphere-tipped" && given(f.fillet_radius_option))
+    errors.push_back(
+        "--fillet-radius: applies to the flat punch only (--indenter flat); the sphere-tipped "
+        "probe is rounded whole");
   if (f.test == kAstmF1306) {
     // The standard fixes the probe and the opening: a flag that sets them too is a conflict.
     for (const CLI::Option* given :
-         {f.indenter_option, f.indenter_radius_option, f.clamp_radius_option})
+         {f.indenter_option, f.indenter_radius_option, f.fillet_radius_option,
+          f.clamp_radius_option})
       if (given && given->count() > 0)
         errors.push_back(fmt::format(
             "{}: conflicts with --test {}, which sets the probe (sphere-tipped, tip radius {} mm) "

@@ -431,10 +431,10 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
                                         const std::vector<double>& depths_mm, FeContact contact,
                                         const FeOptions& options) {
   validate(problem);
-  if (!std::holds_alternative<FlatPunch>(problem.indenter))
+  if (!sharp_flat_punch(problem.indenter))
     throw InvalidInput(
         "indenter",
-        "the finite-element method is implemented for the flat punch only, not the " +
+        "the finite-element method is implemented for the sharp flat punch only, not the " +
             describe(problem.indenter));
   if (problem.preload.pressure_mpa > 0.0)
     throw InvalidInput(

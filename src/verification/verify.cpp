@@ -322,10 +322,10 @@ void compare_small_deflection(const Problem& problem, Checks& checks) {
 
 VerificationReport verify(const Problem& problem, const VerifyOptions& options) {
   validate(problem);
-  if (!std::holds_alternative<FlatPunch>(problem.indenter))
+  if (!sharp_flat_punch(problem.indenter))
     throw InvalidInput(
         "indenter",
-        "the verification methods are implemented for the flat punch only, not the " +
+        "the verification methods are implemented for the sharp flat punch only, not the " +
             describe(problem.indenter));
   if (problem.preload.pressure_mpa > 0.0)
     throw InvalidInput(
