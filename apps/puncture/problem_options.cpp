@@ -411,9 +411,10 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
         "probe is rounded whole");
   if (f.test == kAstmF1306) {
     // The standard fixes the probe and the opening: a flag that sets them too is a conflict.
-    for (const CLI::Option* given :
-         {f.indenter_option, f.indenter_radius_option, f.fillet_radius_option,
-          f.clamp_radius_option})
+    for (const CLI::Option* given : {f.indenter_option,
+                                     f.indenter_radius_option,
+                                     f.fillet_radius_option,
+                                     f.clamp_radius_option})
       if (given && given->count() > 0)
         errors.push_back(fmt::format(
             "{}: conflicts with --test {}, which sets the probe (sphere-tipped, tip radius {} mm) "

@@ -98,9 +98,10 @@ FrictionEstimate friction_from_hole(const Problem& problem, const HoleMeasuremen
   Problem base = problem;
   base.friction = 0.0;  // the unknown: the problem's own is ignored
   if (!sharp_flat_punch(problem.indenter))
-    throw InvalidInput("indenter",
-                       "the friction calibration is implemented for the sharp flat punch only, not the " +
-                           describe(problem.indenter));
+    throw InvalidInput(
+        "indenter",
+        "the friction calibration is implemented for the sharp flat punch only, not the " +
+            describe(problem.indenter));
   if (problem.preload.pressure_mpa > 0.0)
     throw InvalidInput(
         "preload.pressure_mpa",

@@ -45,9 +45,8 @@ inline SphereTippedSettings contact_settings(const Problem& p, const SphereTippe
 // sharp punch (rho = 0) keeps FlatPunchContact.
 inline SphereTippedSettings filleted_settings(const Problem& p, const FlatPunch& punch) {
   const double length = reference_clamp_radius_mm(p);
-  return {punch.radius_mm / length,
-          p.friction,
-          (punch.radius_mm - punch.fillet_radius_mm) / length};
+  return {
+      punch.radius_mm / length, p.friction, (punch.radius_mm - punch.fillet_radius_mm) / length};
 }
 
 template <class Law, class Shape>
@@ -73,7 +72,11 @@ decltype(auto) with_shooting(const Problem& problem, const SolverOptions& option
         if constexpr (std::is_same_v<Shape, FlatPunch>) {
           if (shape.fillet_radius_mm > 0.0) {
             const IndentationShooting<SphereTippedContact<RuntimeLaw>> shooting(
-                law, settings, filleted_settings(problem, shape), options.record_fields, dome_state);
+                law,
+                settings,
+                filleted_settings(problem, shape),
+                options.record_fields,
+                dome_state);
             return std::forward<Fn>(fn)(shooting);
           }
         }
