@@ -178,7 +178,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
   f.indenter_option =
       app.add_option("--indenter",
                      f.indenter,
-                     "Probe shape: flat (the paper's sharp flat-ended cylinder) or\n"
+                     "Probe shape: flat (the paper's flat-ended cylinder, its corner\n"
+                     "sharp or rounded by --fillet-radius) or\n"
                      "sphere-tipped (a cylinder ending in a hemisphere of the same radius;\n"
                      "sliding only, --stick none; with --friction > 0 only while the contact\n"
                      "stays on the hemisphere)")
@@ -198,8 +199,7 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "Radius rho of the flat punch's rounded corner (a toroidal fillet\n"
                      "between the flat face, of radius a - rho, and the cylinder) [mm]\n"
                      "(>= 0 and smaller than --indenter-radius; 0: the paper's sharp\n"
-                     "corner; > 0: sliding only, --stick none, no gas pressure; with\n"
-                     "--friction > 0 only while the contact stays on the fillet)")
+                     "corner; > 0: sliding only, --stick none, no gas pressure)")
           ->group(kGeometry)
           ->capture_default_str();
   app.add_option("--thickness", f.thickness_mm, "Undeformed membrane thickness H [mm] (> 0)")

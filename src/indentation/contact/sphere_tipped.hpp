@@ -16,6 +16,7 @@
 // Coulomb slip on the hemisphere (the membrane slides away from the pole; friction mu p points to
 // it).  Not implemented: friction on the cylinder side (a contact that reaches it with mu > 0 is a
 // status, never a number) and a stick stage (validation_errors refuses the stick rules).
+// (The filleted flat punch below solves friction on the side: rough_side.)
 //
 // The flat punch with a rounded corner (fillet radius rho < a, docs/model.md §19) is the same
 // model with a flat face of radius b = a - rho before the arc (SphereTippedSettings::face): the
@@ -340,6 +341,10 @@ class SphereTippedContact {
   std::optional<FreeStart> free_start(Configuration c, double f, double p) const {
     if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
     if (c == Configuration::SlipWithPartTwo) {
+      if (rough_side_solved()) {
+        const auto side = rough_side(p, f, [](double, const PartTwoState&) {});
+        return side ? std::optional<FreeStart>(side->start) : std::nullopt;
+      }
       if (s_.mu != 0.0) return std::nullopt;  // friction on the side: not implemented
       return side_top_start(f, p);
     }
@@ -360,7 +365,9 @@ class SphereTippedContact {
   // to the equator.
   bool attach(Configuration c, const FreeStart& st, double p, bool record,
               ScaledSolution& sol) const {
-    if (c == Configuration::SlipWithPartTwo) return attach_with_side(st, record, sol);
+    if (c == Configuration::SlipWithPartTwo)
+      return rough_side_solved() ? attach_rough_side(p, record, sol)
+                                 : attach_with_side(st, record, sol);
     InteriorMaximum<SphereCapState> i1_max;
     const auto end = march(p, sol.f, record ? &sol.part_two : nullptr, &i1_max);
     // Recorded, the cap is marched in shorter steps: its edge moves by the integration's error,
@@ -410,10 +417,11 @@ class SphereTippedContact {
     // that is no sign of a side contact, and the cap ends on the hemisphere.
     if (!indicator && pressure_ > 0.0) return hemisphere_plan(f, counted);
     const double g_onset = indicator.value_or(kBeyondDomain);
+    if (g_onset >= 0.0 && rough_side_solved()) return rough_side_plan(*onset, g_onset, counted);
     if (g_onset >= 0.0 && s_.mu != 0.0) {
       plan.configuration = Configuration::SlipWithPartTwo;
       plan.status = Status::OutsideModel;
-      plan.message = s_.face > 0.0 ? kFilletFrictionNotImplemented : kFrictionNotImplemented;
+      plan.message = kFrictionNotImplemented;
       return plan;
     }
     if (g_onset >= 0.0) {
@@ -532,7 +540,9 @@ class SphereTippedContact {
     if (!f_on) return std::nullopt;
     const auto onset = equator_onset(*f_on);
     if (!onset) return std::nullopt;
-    auto sol = shooting.assemble(Configuration::SlipWithPartTwo, *f_on, s_.a / onset->end.r, false);
+    // (With friction on the filleted punch's side the parameter is the face stretch in both.)
+    const double p = rough_side_solved() ? onset->stretch : s_.a / onset->end.r;
+    auto sol = shooting.assemble(Configuration::SlipWithPartTwo, *f_on, p, false);
     if (!sol.integrated) return std::nullopt;
     return sol;
   }
@@ -761,10 +771,6 @@ class SphereTippedContact {
   static constexpr const char* kFrictionNotImplemented =
       "outside the sphere-tipped model: the contact reaches the cylinder side, where friction is "
       "not implemented yet (friction on the hemisphere is; without friction the side is solved)";
-  static constexpr const char* kFilletFrictionNotImplemented =
-      "outside the filleted flat-punch model: the contact reaches the cylinder side, where "
-      "friction is not implemented yet (friction on the fillet is; without friction the side is "
-      "solved)";
   static constexpr const char* kFilletStickNotImplemented =
       "the stick stage on the filleted flat punch is not implemented yet: only sliding (stick "
       "rule none) is solved";
@@ -891,6 +897,165 @@ class SphereTippedContact {
     sol.depth += arc() + length;
     sol.tension_ratio = 1.0;
     return true;
+  }
+
+  // ---- Coulomb slip on the side, past the fillet's equator (filleted flat punch only; the
+  // sphere-tipped probe keeps its status, docs/model.md §19).  Both sliding configurations are
+  // shot on the face stretch l: the cap (face and fillet) to the equator, where it carries
+  // R_e s1 <= f, then the side marched up from it with friction (PartTwoSystem: d(R s1)/dR =
+  // mu s2) until R s1 = f, where Part I leaves vertically.  An initial-value problem from the
+  // axis outward, as the flat punch's under a gas pressure with friction.
+  bool rough_side_solved() const { return s_.mu != 0.0 && s_.face > 0.0; }
+
+  struct RoughSide {
+    FreeStart start;
+    double length;  // the side's current length, equator to top
+    CapEnd cap;     // the cap's end at the equator
+  };
+  // observe(R, (lambda1, y)) at the side's steps, y = minus the height above the equator.  Empty
+  // when the cap carries more than f at the equator (no side; 1e-9 relative is the onset
+  // itself) or cannot be marched.  A top beyond the clamp stands in as Part I of zero length at
+  // the clamp, whose residual a - L0 < 0 the top's approach to the clamp tends to.
+  template <class Observer>
+  std::optional<RoughSide> rough_side(double l, double f, Observer&& observe,
+                                      std::vector<PartTwoSample>* cap_samples = nullptr,
+                                      InteriorMaximum<SphereCapState>* i1_max = nullptr) const {
+    const auto end = march(l, std::numeric_limits<double>::infinity(), cap_samples, i1_max);
+    if (!end || !end->at_equator || !(f > 0.0)) return std::nullopt;
+    const double q_equator = end->vertical;  // R s1 there
+    if (!(q_equator <= f * (1.0 + 1e-9))) return std::nullopt;
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, PartTwoEquation::RingBalance, locking_i1_};
+    IntegrationSettings integration = part_one_.settings().integration;
+    if (cap_samples) integration.max_step = s_.a / std::max(1, part_one_.settings().field_points);
+    auto excess = [&](double r, const PartTwoState& y) {
+      const double v = r * membrane_stress(law_, y[0], s_.a / r).s1 - f;
+      return std::isfinite(v) ? v : 1.0;
+    };
+    PartTwoState y{end->state[1], 0.0}, y_prev = y;
+    double r_top = end->r, r_prev = end->r, r_hit = -1.0;
+    if (q_equator >= f) {
+      observe(r_top, y);
+    } else {
+      if (!integrate_part(side, y, end->r, 1.0, integration, [&](double r, const PartTwoState& x) {
+            if (excess(r, x) >= 0.0) {
+              r_hit = r;
+              return false;
+            }
+            r_prev = r;
+            y_prev = x;
+            observe(r, x);
+            return true;
+          }))
+        return std::nullopt;
+      if (r_hit < 0.0)
+        return RoughSide{{{0.0, y[0], s_.a, 0.0}, 1.0, kHalfPiCap, 1.0}, -y[1], *end};
+      auto gap_at = [&](double r) {
+        const auto x = step_or_advance(side, y_prev, r_prev, r, part_one_.settings().integration);
+        return x ? excess(r, *x) : 1.0;
+      };
+      const double g_prev = gap_at(r_prev), g_hit = gap_at(r_hit);
+      if (!(g_prev * g_hit <= 0.0)) return std::nullopt;
+      std::uintmax_t iterations = 100;
+      const auto bracket =
+          boost::math::tools::toms748_solve(gap_at,
+                                            r_prev,
+                                            r_hit,
+                                            g_prev,
+                                            g_hit,
+                                            boost::math::tools::eps_tolerance<double>(50),
+                                            iterations);
+      r_top = 0.5 * (bracket.first + bracket.second);
+      const auto x = step_or_advance(side, y_prev, r_prev, r_top, part_one_.settings().integration);
+      if (!x) return std::nullopt;
+      y = *x;
+      observe(r_top, y);
+    }
+    // lambda1 at the top from R s1 = f exactly, as the frictionless start has it.
+    const double l2 = s_.a / r_top;
+    const auto l1 = invert_radial_stress(law_, f / r_top, l2, y[0]);
+    if (!l1) return std::nullopt;
+    return RoughSide{{{0.0, *l1, l2, 0.0}, r_top, kHalfPiCap, 1.0}, -y[1], *end};
+  }
+
+  // The cap again (samples, largest I1) and the side up to Part I's start (samples from the
+  // equator up, psi = pi/2 + height / rho; its largest I1 refined between steps).
+  bool attach_rough_side(double l, bool record, ScaledSolution& sol) const {
+    InteriorMaximum<SphereCapState> i1_max;
+    InteriorMaximum<PartTwoState> side_max;
+    std::vector<PartTwoSample> cap_samples, side_samples;
+    const auto side = rough_side(
+        l,
+        sol.f,
+        [&](double r, const PartTwoState& y) {
+          if (record) side_samples.push_back({r, y[0], y[1]});
+          side_max.observe(r, y, first_invariant(y[0], s_.a / r));
+        },
+        record ? &cap_samples : nullptr,
+        &i1_max);
+    if (!side) {
+      sol.status = Status::NoConvergence;
+      sol.message = "the side with friction could not be marched up to where Part I starts again";
+      return false;
+    }
+    track_cap_maximum(i1_max, l, sol);
+    const PartTwoSystem<Law> side_system{
+        law_, s_.a, s_.mu, PartTwoEquation::RingBalance, locking_i1_};
+    if (side_max.observed()) {
+      const auto found =
+          refined_maximum(side_max, side_system, [&](double r, const PartTwoState& x) {
+            return first_invariant(x[0], s_.a / r);
+          });
+      if (found.value > sol.max_i1) {
+        sol.max_i1 = found.value;
+        sol.max_i1_r = found.r;
+        sol.max_i1_radius = s_.a;
+      }
+    }
+    if (record) {
+      sol.part_two = std::move(cap_samples);
+      for (const auto& x : side_samples)
+        sol.part_two.push_back({x[0], x[1], kHalfPiCap - x[2] / arc()});
+    }
+    sol.r_corner = side->cap.r;
+    sol.part_three_stretch = l;
+    sol.part_two_length = side->length;
+    sol.depth += arc() + side->length;
+    sol.tension_ratio = 1.0;
+    return true;
+  }
+
+  // Friction on the side: the face stretch below the equator onset's (where the side has zero
+  // length and the residual is the side indicator, >= 0), from the first of 1 + (onset - 1)
+  // 2^-k (k = 1, 2, ...) with a negative clamp residual (a longer side, its top nearer the
+  // clamp); the candidate before it caps the bracket.
+  template <class Residual>
+  ShootingPlan rough_side_plan(const EquatorOnset& onset, double g_onset, Residual& counted) const {
+    ShootingPlan plan;
+    plan.configuration = Configuration::SlipWithPartTwo;
+    double cap = onset.stretch, g_cap = g_onset;
+    for (int k = 1; k <= 60; ++k) {
+      const double l = 1.0 + (onset.stretch - 1.0) * std::ldexp(1.0, -k);
+      const auto g = counted(Configuration::SlipWithPartTwo, l);
+      if (g && *g < 0.0) {
+        plan.lo = l;
+        plan.g_lo = *g;
+        plan.cap = cap;
+        plan.g_cap = g_cap;
+        plan.no_root_message =
+            "filleted flat-punch shooting (side with friction) found no face stretch meeting "
+            "the clamp condition";
+        return plan;
+      }
+      if (g) {
+        cap = l;
+        g_cap = *g;
+      }
+    }
+    plan.status = Status::NoConvergence;
+    plan.message =
+        "filleted flat-punch shooting (side with friction): no face stretch with a "
+        "negative clamp residual";
+    return plan;
   }
 
   const FreePart<Law>& part_one_;
