@@ -131,9 +131,8 @@ std::vector<std::string> energy_release_conflicts(const Problem& p) {
   std::vector<std::string> out;
   if (!sharp_flat_punch(p.indenter))
     out.push_back(
-        fmt::format("needs the sharp flat punch (the cut along the corner's ring and the cut "
-                    "membrane resting on "
-                    "the rod through the hole are the flat punch's), got the {}",
+        fmt::format("needs the flat punch with a sharp corner (the cut along the corner's ring "
+                    "and the cut membrane resting on the rod through the hole are its), got the {}",
                     describe(p.indenter)));
   if (p.friction != 0.0)
     out.push_back(fmt::format(
