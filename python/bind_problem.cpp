@@ -89,6 +89,9 @@ std::string geometry_repr(const Geometry& g) {
 std::string indenter_repr(const Indenter& indenter) {
   struct Repr {
     std::string operator()(const FlatPunch& p) const {
+      if (p.fillet_radius_mm > 0.0)
+        return fmt::format(
+            "FlatPunch(radius_mm={:g}, fillet_radius_mm={:g})", p.radius_mm, p.fillet_radius_mm);
       return fmt::format("FlatPunch(radius_mm={:g})", p.radius_mm);
     }
     std::string operator()(const SphereTipped& p) const {
@@ -247,11 +250,19 @@ void bind_problem(py::module_& m) {
 
   // Indenter shapes are values (read-only: assign a new one to Problem.indenter).
   py::class_<FlatPunch> flat_punch(
-      m, "FlatPunch", "The paper's sharp flat-ended cylindrical indenter");
+      m,
+      "FlatPunch",
+      "The paper's flat-ended cylindrical indenter, its corner sharp or rounded by a fillet");
   flat_punch
-      .def(py::init([](double radius_mm) { return FlatPunch{radius_mm}; }),
-           py::arg("radius_mm") = FlatPunch{}.radius_mm)
+      .def(py::init([](double radius_mm, double fillet_radius_mm) {
+             return FlatPunch{radius_mm, fillet_radius_mm};
+           }),
+           py::arg("radius_mm") = FlatPunch{}.radius_mm,
+           py::arg("fillet_radius_mm") = FlatPunch{}.fillet_radius_mm)
       .def_readonly("radius_mm", &FlatPunch::radius_mm, "cylinder radius a [mm]")
+      .def_readonly("fillet_radius_mm",
+                    &FlatPunch::fillet_radius_mm,
+                    "corner fillet radius rho [mm] (0: the sharp corner)")
       .def("__repr__", [](const FlatPunch& p) { return indenter_repr(p); });
   copyable(flat_punch);
   py::class_<SphereTipped> sphere_tipped(

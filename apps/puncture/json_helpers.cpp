@@ -99,6 +99,9 @@ json problem_json(const Problem& p, std::string_view calibrated) {
   }
   // The flat punch's JSON is unchanged; another shape is named.
   if (std::holds_alternative<SphereTipped>(p.indenter)) out["indenter"] = "sphere-tipped";
+  if (const auto* punch = std::get_if<FlatPunch>(&p.indenter);
+      punch && punch->fillet_radius_mm > 0.0)
+    out["fillet_radius_mm"] = finite(punch->fillet_radius_mm, "fillet radius");
   return out;
 }
 

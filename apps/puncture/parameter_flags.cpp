@@ -12,9 +12,10 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 34> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 35> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
+    {"indenter.fillet_radius_mm", "--fillet-radius"},
     {"geometry.thickness_mm", "--thickness"},
     {"preload.prestretch", "--prestretch"},
     {"preload.pressure_mpa", "--pressure"},

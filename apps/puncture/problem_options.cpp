@@ -178,7 +178,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
   f.indenter_option =
       app.add_option("--indenter",
                      f.indenter,
-                     "Probe shape: flat (the paper's sharp flat-ended cylinder) or\n"
+                     "Probe shape: flat (the paper's flat-ended cylinder, its corner\n"
+                     "sharp or rounded by --fillet-radius) or\n"
                      "sphere-tipped (a cylinder ending in a hemisphere of the same radius;\n"
                      "sliding only, --stick none; with --friction > 0 only while the contact\n"
                      "stays on the hemisphere)")
@@ -190,6 +191,15 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      f.indenter_radius_mm,
                      "Radius a of the indenter's cylinder (and of the sphere-tipped\n"
                      "probe's hemisphere) [mm] (> 0 and smaller than the clamp radius)")
+          ->group(kGeometry)
+          ->capture_default_str();
+  f.fillet_radius_option =
+      app.add_option("--fillet-radius",
+                     f.fillet_radius_mm,
+                     "Radius rho of the flat punch's rounded corner (a toroidal fillet\n"
+                     "between the flat face, of radius a - rho, and the cylinder) [mm]\n"
+                     "(>= 0 and smaller than --indenter-radius; 0: the paper's sharp\n"
+                     "corner; > 0: sliding only, --stick none, no gas pressure)")
           ->group(kGeometry)
           ->capture_default_str();
   app.add_option("--thickness", f.thickness_mm, "Undeformed membrane thickness H [mm] (> 0)")
@@ -394,11 +404,17 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   if (f.indenter == "sphere-tipped")
     p.indenter = SphereTipped{f.indenter_radius_mm};
   else
-    p.indenter = FlatPunch{f.indenter_radius_mm};
+    p.indenter = FlatPunch{f.indenter_radius_mm, f.fillet_radius_mm};
+  if (f.indenter == "sphere-tipped" && given(f.fillet_radius_option))
+    errors.push_back(
+        "--fillet-radius: applies to the flat punch only (--indenter flat); the sphere-tipped "
+        "probe is rounded whole");
   if (f.test == kAstmF1306) {
     // The standard fixes the probe and the opening: a flag that sets them too is a conflict.
-    for (const CLI::Option* given :
-         {f.indenter_option, f.indenter_radius_option, f.clamp_radius_option})
+    for (const CLI::Option* given : {f.indenter_option,
+                                     f.indenter_radius_option,
+                                     f.fillet_radius_option,
+                                     f.clamp_radius_option})
       if (given && given->count() > 0)
         errors.push_back(fmt::format(
             "{}: conflicts with --test {}, which sets the probe (sphere-tipped, tip radius {} mm) "

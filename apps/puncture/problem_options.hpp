@@ -18,6 +18,7 @@ struct ProblemFlags {
   double clamp_radius_mm = defaults.geometry.clamp_radius_mm;
   std::string indenter = "flat";
   double indenter_radius_mm = radius_mm(defaults.indenter);
+  double fillet_radius_mm = 0.0;  // the flat punch's corner fillet (0: sharp)
   double thickness_mm = defaults.geometry.thickness_mm;
   double prestretch = defaults.preload.prestretch;
   double pressure_mpa = defaults.preload.pressure_mpa;
@@ -45,6 +46,7 @@ struct ProblemFlags {
   CLI::Option* clamp_radius_option = nullptr;
   CLI::Option* indenter_option = nullptr;
   CLI::Option* indenter_radius_option = nullptr;
+  CLI::Option* fillet_radius_option = nullptr;
   CLI::Option* j_lim_option = nullptr;
   CLI::Option* mr_alpha_option = nullptr;
   CLI::Option* shear_modulus_option = nullptr;

@@ -98,6 +98,16 @@ def test_state_at_depth_matches_cli(cli):
     assert state.configuration.token == from_cli["configuration"]
 
 
+def test_filleted_flat_punch_matches_cli(cli):
+    punch = pu.FlatPunch(radius_mm=2.0, fillet_radius_mm=0.5)
+    assert punch.fillet_radius_mm == 0.5 and pu.FlatPunch().fillet_radius_mm == 0.0
+    assert repr(punch) == "FlatPunch(radius_mm=2, fillet_radius_mm=0.5)"
+    state = pu.solve_at_depth(pu.Problem(indenter=punch, friction=0.0), 20.0)
+    from_cli = cli.json("state", "--depth", "20", "--friction", "0", "--fillet-radius", "0.5")
+    assert state.force_n == pytest.approx(from_cli["state"]["force_n"], rel=1e-9)
+    assert from_cli["inputs"]["fillet_radius_mm"] == 0.5
+
+
 @pytest.mark.parametrize("load,expected", [(0.2, pu.Stage.Stick), (0.5, pu.Stage.Slip)])
 def test_automatic_stage_follows_the_stick_criterion(cli, load, expected):
     problem = pu.Problem(stick=pu.StickCriterion.force(0.3))

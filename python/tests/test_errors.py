@@ -29,6 +29,8 @@ INVALID = [
      ["material.law.n", "critical_i1"]),
     ({"material": pu.Material(0.06, pu.GentGent(j_lim=125, beta=0.6))},
      ["--material", "gent-gent", "--i2-share", "0.6"], ["material.law.beta"]),
+    ({"indenter": pu.FlatPunch(radius_mm=2, fillet_radius_mm=2)}, ["--fillet-radius", "2"],
+     ["indenter.fillet_radius_mm"]),
     ({"friction": -0.1}, ["--friction", "-0.1"], ["friction"]),
     ({"friction": 11}, ["--friction", "11"], ["friction"]),
     ({"critical_i1": 128}, ["--critical-i1", "128"], ["critical_i1"]),

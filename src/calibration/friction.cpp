@@ -97,10 +97,11 @@ FrictionEstimate friction_from_hole(const Problem& problem, const HoleMeasuremen
     throw InvalidInput(std::move(errors), "invalid problem:");
   Problem base = problem;
   base.friction = 0.0;  // the unknown: the problem's own is ignored
-  if (!std::holds_alternative<FlatPunch>(problem.indenter))
-    throw InvalidInput("indenter",
-                       "the friction calibration is implemented for the flat punch only, not the " +
-                           describe(problem.indenter));
+  if (!sharp_flat_punch(problem.indenter))
+    throw InvalidInput(
+        "indenter",
+        "the friction calibration is implemented for the sharp flat punch only, not the " +
+            describe(problem.indenter));
   if (problem.preload.pressure_mpa > 0.0)
     throw InvalidInput(
         "preload.pressure_mpa",

@@ -129,11 +129,11 @@ FailureAssessment energy_release_assessment(const Problem& p, const EnergyReleas
 
 std::vector<std::string> energy_release_conflicts(const Problem& p) {
   std::vector<std::string> out;
-  if (!std::holds_alternative<FlatPunch>(p.indenter))
-    out.push_back(fmt::format(
-        "needs the flat punch (the cut along the corner's ring and the cut membrane resting on "
-        "the rod through the hole are the flat punch's), got the {}",
-        describe(p.indenter)));
+  if (!sharp_flat_punch(p.indenter))
+    out.push_back(
+        fmt::format("needs the flat punch with a sharp corner (the cut along the corner's ring "
+                    "and the cut membrane resting on the rod through the hole are its), got the {}",
+                    describe(p.indenter)));
   if (p.friction != 0.0)
     out.push_back(fmt::format(
         "needs a frictionless contact, friction 0 (got {:g}): friction dissipates, so the "

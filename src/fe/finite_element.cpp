@@ -435,10 +435,10 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
                                         const FeOptions& options) {
   validate(problem);
   const auto* sphere = std::get_if<SphereTipped>(&problem.indenter);
-  if (!std::holds_alternative<FlatPunch>(problem.indenter) && !sphere)
+  if (!sharp_flat_punch(problem.indenter) && !sphere)
     throw InvalidInput("indenter",
-                       "the finite-element method is implemented for the flat punch and the "
-                       "sphere-tipped probe only, not the " +
+                       "the finite-element method is implemented for the sharp flat punch and "
+                       "the sphere-tipped probe only, not the " +
                            describe(problem.indenter));
   if (sphere && contact == FeContact::Held)
     throw InvalidInput("indenter",

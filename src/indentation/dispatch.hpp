@@ -40,6 +40,15 @@ inline SphereTippedSettings contact_settings(const Problem& p, const SphereTippe
   return {probe.radius_mm / reference_clamp_radius_mm(p), p.friction};
 }
 
+// The flat punch with a rounded corner is the sphere-tipped model with a flat face of radius
+// a - rho inside the arc (contact/sphere_tipped.hpp): chosen at run time by with_shooting, the
+// sharp punch (rho = 0) keeps FlatPunchContact.
+inline SphereTippedSettings filleted_settings(const Problem& p, const FlatPunch& punch) {
+  const double length = reference_clamp_radius_mm(p);
+  return {
+      punch.radius_mm / length, p.friction, (punch.radius_mm - punch.fillet_radius_mm) / length};
+}
+
 template <class Law, class Shape>
 using ContactModelOf = decltype(contact_model_of<Law>(std::declval<const Shape&>()));
 
@@ -59,7 +68,19 @@ decltype(auto) with_shooting(const Problem& problem, const SolverOptions& option
   const RuntimeLaw law(problem.material.law);
   return std::visit(
       [&](const auto& shape) -> decltype(auto) {
-        using Contact = ContactModelOf<RuntimeLaw, std::decay_t<decltype(shape)>>;
+        using Shape = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<Shape, FlatPunch>) {
+          if (shape.fillet_radius_mm > 0.0) {
+            const IndentationShooting<SphereTippedContact<RuntimeLaw>> shooting(
+                law,
+                settings,
+                filleted_settings(problem, shape),
+                options.record_fields,
+                dome_state);
+            return std::forward<Fn>(fn)(shooting);
+          }
+        }
+        using Contact = ContactModelOf<RuntimeLaw, Shape>;
         const IndentationShooting<Contact> shooting(
             law, settings, contact_settings(problem, shape), options.record_fields, dome_state);
         return std::forward<Fn>(fn)(shooting);

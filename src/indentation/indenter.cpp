@@ -23,12 +23,22 @@ double radius_mm(const Indenter& indenter) {
 
 std::string describe(const Indenter& indenter) {
   return std::visit(
-      Overloaded{
-          [](const FlatPunch& p) { return fmt::format("flat punch, radius {:g} mm", p.radius_mm); },
-          [](const SphereTipped& p) {
-            return fmt::format("sphere-tipped probe, radius {:g} mm", p.radius_mm);
-          }},
+      Overloaded{[](const FlatPunch& p) {
+                   if (p.fillet_radius_mm > 0.0)
+                     return fmt::format("flat punch, radius {:g} mm, corner fillet radius {:g} mm",
+                                        p.radius_mm,
+                                        p.fillet_radius_mm);
+                   return fmt::format("flat punch, radius {:g} mm", p.radius_mm);
+                 },
+                 [](const SphereTipped& p) {
+                   return fmt::format("sphere-tipped probe, radius {:g} mm", p.radius_mm);
+                 }},
       indenter);
+}
+
+bool sharp_flat_punch(const Indenter& indenter) {
+  const auto* punch = std::get_if<FlatPunch>(&indenter);
+  return punch && !(punch->fillet_radius_mm > 0.0);
 }
 
 }  // namespace puncture

@@ -293,6 +293,39 @@ void throw_if_invalid(const char* heading, const std::vector<ValidationError>& e
   if (!errors.empty()) throw InvalidInput(errors, heading);
 }
 
+// The flat punch's corner fillet: 0 <= rho < a; a rounded corner is solved sliding, without a
+// gas pressure, for now (docs/model.md §19).
+void append_fillet_errors(std::vector<ValidationError>& errors, const Problem& p) {
+  const auto* punch = std::get_if<FlatPunch>(&p.indenter);
+  if (!punch) return;
+  const double rho = punch->fillet_radius_mm, a = punch->radius_mm;
+  if (!std::isfinite(rho) || rho < 0.0) {
+    errors.push_back(
+        {"indenter.fillet_radius_mm",
+         fmt::format("fillet radius must be a finite number >= 0 mm (0: the sharp corner), got {}",
+                     rho)});
+    return;
+  }
+  if (rho == 0.0) return;
+  if (std::isfinite(a) && rho >= a)
+    errors.push_back(
+        {"indenter.fillet_radius_mm",
+         fmt::format("fillet radius must be smaller than the indenter radius ({} mm; a fillet "
+                     "of that radius is the sphere-tipped probe, --indenter sphere-tipped), "
+                     "got {} mm",
+                     a,
+                     rho)});
+  if (p.stick.rule != StickRule::None)
+    errors.push_back({"stick.rule",
+                      fmt::format("the stick stage on the filleted flat punch is not implemented "
+                                  "yet: stick rule must be 'none', got '{}'",
+                                  to_string(p.stick.rule))});
+  if (p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3)
+    errors.push_back({p.preload.gas_volume_mm3 ? "preload.gas_volume_mm3" : "preload.pressure_mpa",
+                      "a gas pressure under the membrane is not implemented yet for the filleted "
+                      "flat punch: give a fillet radius of 0 (the sharp corner) or no gas"});
+}
+
 }  // namespace detail
 
 std::vector<ValidationError> validation_errors(const Problem& p) {
@@ -310,6 +343,7 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
          fmt::format("indenter radius must be smaller than the clamp radius ({} mm), got {} mm",
                      g.clamp_radius_mm,
                      a)});
+  detail::append_fillet_errors(errors, p);
   detail::append_material_errors(errors, p.material);
   if (!std::isfinite(p.friction) || p.friction < 0.0)
     errors.push_back(

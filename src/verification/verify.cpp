@@ -354,10 +354,10 @@ void compare_small_deflection(const Problem& problem, Checks& checks) {
 
 VerificationReport verify(const Problem& problem, const VerifyOptions& options) {
   validate(problem);
-  if (!std::holds_alternative<FlatPunch>(problem.indenter) && !smooth_probe(problem))
+  if (!sharp_flat_punch(problem.indenter) && !smooth_probe(problem))
     throw InvalidInput("indenter",
-                       "the verification methods are implemented for the flat punch and the "
-                       "sphere-tipped probe only, not the " +
+                       "the verification methods are implemented for the sharp flat punch and "
+                       "the sphere-tipped probe only, not the " +
                            describe(problem.indenter));
   if (problem.preload.pressure_mpa > 0.0)
     throw InvalidInput(

@@ -16,6 +16,12 @@
 // Coulomb slip on the hemisphere (the membrane slides away from the pole; friction mu p points to
 // it).  Not implemented: friction on the cylinder side (a contact that reaches it with mu > 0 is a
 // status, never a number) and a stick stage (validation_errors refuses the stick rules).
+// (The filleted flat punch below solves friction on the side: rough_side.)
+//
+// The flat punch with a rounded corner (fillet radius rho < a, docs/model.md §19) is the same
+// model with a flat face of radius b = a - rho before the arc (SphereTippedSettings::face): the
+// face is Part III, uniform at the pole's stretch l (the parameter), and the arc of radius rho
+// starts at its edge, R = b / l, with theta = 0 and lambda1 = l.  The hemisphere is b = 0.
 #include <fmt/format.h>
 
 #include <array>
@@ -41,6 +47,9 @@ namespace puncture::detail {
 struct SphereTippedSettings {
   double a;   // tip (and cylinder) radius / stress-free clamp radius A / L0
   double mu;  // Coulomb friction coefficient (on the hemisphere; the side only without)
+  // The flat punch with a rounded corner (docs/model.md §19) is this probe with a flat face of
+  // radius b = a - rho inside an arc of radius rho: b / (A / L0); 0 for the hemisphere.
+  double face = 0.0;
 };
 
 // The cap: the membrane on the hemisphere of radius a, state (theta, lambda1, e) along the
@@ -60,10 +69,13 @@ struct SphereCapSystem {
   double locking_i1;
   double mu = 0.0;  // Coulomb slip: the membrane slides away from the pole, friction points to it
   double pressure = 0.0;  // gas pressure P pressing the membrane onto the sphere (adds to p)
+  // The filleted flat punch: the arc (radius a here: rho) starts at the flat face's edge, current
+  // radius b + a sin(theta) (0 for the hemisphere).
+  double face = 0.0;
 
   void operator()(const SphereCapState& x, SphereCapState& dx, double r_ref) const {
     const double theta = x[0], l1 = x[1];
-    const double l2 = a * std::sin(theta) / r_ref;
+    const double l2 = (face + a * std::sin(theta)) / r_ref;
     if (!(l1 > 0.0) || !(l2 > 0.0)) return outside_domain(dx);
     const auto st = membrane_stress(law, l1, l2);
     if (!(st.i1 < locking_i1) || !(st.ds1_dl1 > 0.0) || !std::isfinite(st.ds1_dl1))
@@ -72,10 +84,12 @@ struct SphereCapSystem {
     dx[0] = l1 / a;
     // d(R s1)/dR = s2 cos(theta) + mu p r lambda1, p r lambda1 = sin(theta) (s1 l1 / l2 + s2 +
     // P a l1) (the contact pressure is Laplace's plus the gas pressure).
+    // On the fillet p r lambda1 gains b (s1 lambda1 / (lambda2 rho) + P lambda1).
     const double tangential =
         mu == 0.0 ? std::cos(theta) * st.s2
                   : std::cos(theta) * st.s2 +
-                        mu * std::sin(theta) * (st.s1 * l1 / l2 + st.s2 + pressure * a * l1);
+                        mu * std::sin(theta) * (st.s1 * l1 / l2 + st.s2 + pressure * a * l1) +
+                        (face == 0.0 ? 0.0 : mu * face * (st.s1 * l1 / (l2 * a) + pressure * l1));
     dx[1] = (tangential - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
     dx[2] = strain_energy_density(law, l1, l2, st.i1) * r_ref;
   }
@@ -153,13 +167,18 @@ class SphereTippedContact {
                               InteriorMaximum<SphereCapState>* i1_max = nullptr) const {
     if (!(l > 0.0) || !std::isfinite(l) || !(first_invariant(l, l) < locking_i1_))
       return std::nullopt;
-    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu, pressure_};
+    const SphereCapSystem<Law> cap = cap_system();
     // theta = kPoleStart there (closer with friction: that start is exact to O(R^2) only; the
-    // neglected terms are O((mu theta)^2) ~ 1e-10 mu^2 relative at theta = 1e-5)
-    const double r_start = (s_.mu == 0.0 ? kPoleStart : kPoleStartFriction) * s_.a / l;
-    SphereCapState y = sphere_cap_pole_state(law_, s_.a, l, r_start, s_.mu, pressure_);
+    // neglected terms are O((mu theta)^2) ~ 1e-10 mu^2 relative at theta = 1e-5).  With a flat
+    // face the arc starts at its edge, R = b / l, with the face's uniform state.
+    const double r_start =
+        s_.face > 0.0 ? s_.face / l : (s_.mu == 0.0 ? kPoleStart : kPoleStartFriction) * s_.a / l;
+    if (!(r_start < 1.0)) return std::nullopt;  // the face's edge must lie inside the clamp
+    SphereCapState y = s_.face > 0.0
+                           ? face_edge_state(l, r_start)
+                           : sphere_cap_pole_state(law_, s_.a, l, r_start, s_.mu, pressure_);
     auto vertical = [&](double r, const SphereCapState& x) {
-      return r * membrane_stress(law_, x[1], s_.a * std::sin(x[0]) / r).s1 * std::sin(x[0]);
+      return r * membrane_stress(law_, x[1], arc_radius_at(x[0]) / r).s1 * std::sin(x[0]);
     };
     auto carried = [&](double r, const SphereCapState& x) {
       return pressure_ == 0.0 ? vertical(r, x) : vertical(r, x) + gas_load(x[0]);
@@ -172,11 +191,13 @@ class SphereTippedContact {
     IntegrationSettings integration = part_one_.settings().integration;
     if (samples) {
       const int n = std::max(1, part_one_.settings().field_points);
-      integration.max_step = s_.a / n;
+      integration.max_step = arc() / n;
     }
     if (samples) {
       samples->clear();
       samples->push_back({0.0, l, 0.0});
+      for (int k = 1; k < (s_.face > 0.0 ? kFacePoints : 0); ++k)  // the face, uniform
+        samples->push_back({r_start * k / kFacePoints, l, 0.0});
     }
     const bool ok = integrate_part(cap, y, r_start, 1.0, integration, [&](double r, const auto& x) {
       if (r > r_start && crossed(r, x)) {
@@ -188,7 +209,7 @@ class SphereTippedContact {
       y_prev = x;
       if (samples) samples->push_back({r, x[1], x[0]});
       if (i1_max) {
-        const double l2 = s_.a * std::sin(x[0]) / r;
+        const double l2 = arc_radius_at(x[0]) / r;
         i1_max->observe(r, x, first_invariant(x[1], l2));
         if (wrinkle_r < 0.0 && hoop_compressive(x[1], l2)) {
           wrinkle_r = r;
@@ -259,15 +280,25 @@ class SphereTippedContact {
       return r_root;
     };
     const auto equator = [&](double, const SphereCapState& x) {
-      return Event{x[0] - kHalfPiCap, x[1] / s_.a};
+      return Event{x[0] - kHalfPiCap, x[1] / arc()};
     };
     // V = R s1 sin(theta) + P (a sin(theta))^2 / 2 - f, with dV/dR = cos(theta) (s2 sin(theta)
     // + R s1 lambda1 / a + P a sin(theta) lambda1) and, with friction, + mu sin(theta)^2 (s1
-    // lambda1 / lambda2 + s2 + P a lambda1).
+    // lambda1 / lambda2 + s2 + P a lambda1).  On the fillet (arc radius rho, current radius r):
+    // dV/dR = cos(theta) (s2 sin(theta) + R s1 lambda1 / rho + P r lambda1) + mu sin(theta)
+    // p r lambda1.
     const auto edge = [&](double r, const SphereCapState& x) {
-      const double l2 = s_.a * std::sin(x[0]) / r;
+      const double l2 = arc_radius_at(x[0]) / r;
       const auto st = membrane_stress(law_, x[1], l2);
       const double c = std::cos(x[0]), sn = std::sin(x[0]);
+      if (s_.face > 0.0) {
+        const double rho = arc(), radius = arc_radius_at(x[0]);
+        const double traction = sn * (st.s1 * x[1] / l2 + st.s2 + pressure_ * rho * x[1]) +
+                                s_.face * (st.s1 * x[1] / (l2 * rho) + pressure_ * x[1]);
+        return Event{r * st.s1 * sn + gas_load(x[0]) - f,
+                     c * (st.s2 * sn + r * st.s1 * x[1] / rho + pressure_ * radius * x[1]) +
+                         s_.mu * sn * traction};
+      }
       const double gas = pressure_ * s_.a * x[1];
       const double friction = s_.mu * sn * sn * (st.s1 * x[1] / l2 + st.s2 + gas);
       return Event{r * st.s1 * sn + gas_load(x[0]) - f,
@@ -303,13 +334,17 @@ class SphereTippedContact {
     if (samples) samples->push_back({end.r, end.state[1], end.state[0]});
     if (i1_max)
       i1_max->observe(
-          end.r, end.state, first_invariant(end.state[1], s_.a * std::sin(end.state[0]) / end.r));
+          end.r, end.state, first_invariant(end.state[1], arc_radius_at(end.state[0]) / end.r));
     return end;
   }
 
   std::optional<FreeStart> free_start(Configuration c, double f, double p) const {
     if (!(p > 0.0) || !std::isfinite(p)) return std::nullopt;
     if (c == Configuration::SlipWithPartTwo) {
+      if (rough_side_solved()) {
+        const auto side = rough_side(p, f, [](double, const PartTwoState&) {});
+        return side ? std::optional<FreeStart>(side->start) : std::nullopt;
+      }
       if (s_.mu != 0.0) return std::nullopt;  // friction on the side: not implemented
       return side_top_start(f, p);
     }
@@ -330,7 +365,9 @@ class SphereTippedContact {
   // to the equator.
   bool attach(Configuration c, const FreeStart& st, double p, bool record,
               ScaledSolution& sol) const {
-    if (c == Configuration::SlipWithPartTwo) return attach_with_side(st, record, sol);
+    if (c == Configuration::SlipWithPartTwo)
+      return rough_side_solved() ? attach_rough_side(p, record, sol)
+                                 : attach_with_side(st, record, sol);
     InteriorMaximum<SphereCapState> i1_max;
     const auto end = march(p, sol.f, record ? &sol.part_two : nullptr, &i1_max);
     // Recorded, the cap is marched in shorter steps: its edge moves by the integration's error,
@@ -360,7 +397,7 @@ class SphereTippedContact {
     if (stage == Stage::Stick) {
       plan.configuration = Configuration::Stick;
       plan.status = Status::OutsideModel;
-      plan.message = kStickNotImplemented;
+      plan.message = s_.face > 0.0 ? kFilletStickNotImplemented : kStickNotImplemented;
       return plan;
     }
     // The pole stretch at which the cap carries f exactly at the equator, and the clamp residual
@@ -380,6 +417,7 @@ class SphereTippedContact {
     // that is no sign of a side contact, and the cap ends on the hemisphere.
     if (!indicator && pressure_ > 0.0) return hemisphere_plan(f, counted);
     const double g_onset = indicator.value_or(kBeyondDomain);
+    if (g_onset >= 0.0 && rough_side_solved()) return rough_side_plan(*onset, g_onset, counted);
     if (g_onset >= 0.0 && s_.mu != 0.0) {
       plan.configuration = Configuration::SlipWithPartTwo;
       plan.status = Status::OutsideModel;
@@ -502,7 +540,9 @@ class SphereTippedContact {
     if (!f_on) return std::nullopt;
     const auto onset = equator_onset(*f_on);
     if (!onset) return std::nullopt;
-    auto sol = shooting.assemble(Configuration::SlipWithPartTwo, *f_on, s_.a / onset->end.r, false);
+    // (With friction on the filleted punch's side the parameter is the face stretch in both.)
+    const double p = rough_side_solved() ? onset->stretch : s_.a / onset->end.r;
+    auto sol = shooting.assemble(Configuration::SlipWithPartTwo, *f_on, p, false);
     if (!sol.integrated) return std::nullopt;
     return sol;
   }
@@ -516,8 +556,14 @@ class SphereTippedContact {
   const Law& law() const { return law_; }
 
   // Pole (the equibiaxial stretch is the largest I1), the cap, the side, or Part I.
+  // With a flat face the pole's I1 holds on all of it: reported at its edge, as the sharp
+  // punch's Part III.
   LargestFirstInvariant largest_first_invariant(const ScaledSolution& sol) const {
-    if (pole_is_largest(sol)) return {MembranePart::Tip, 0.0, 0.0};
+    if (pole_is_largest(sol))
+      return s_.face > 0.0 ? LargestFirstInvariant{MembranePart::Tip,
+                                                   s_.face / sol.part_three_stretch,
+                                                   s_.face}
+                           : LargestFirstInvariant{MembranePart::Tip, 0.0, 0.0};
     const bool with_side = sol.configuration == Configuration::SlipWithPartTwo;
     const bool on_cap = sol.max_i1_r < sol.r_corner * (1.0 - kEdgeTol);
     const bool on_side = with_side && !on_cap && sol.max_i1_r < sol.r_top * (1.0 - kEdgeTol);
@@ -529,12 +575,18 @@ class SphereTippedContact {
   }
 
   std::string crack_location(const ScaledSolution& sol) const {
-    if (pole_is_largest(sol)) return "the pole, under the tip of the sphere";
+    const bool fillet = s_.face > 0.0;
+    if (pole_is_largest(sol))
+      return fillet ? "Part III, on the flat face (uniform, as stretched as the pole)"
+                    : "the pole, under the tip of the sphere";
     const bool with_side = sol.configuration == Configuration::SlipWithPartTwo;
     if (std::abs(sol.max_i1_r - sol.r_top) <= kEdgeTol * sol.r_top)
       return with_side ? "the top of the contact on the cylinder side, where the membrane leaves it"
+             : fillet  ? "the contact edge, where the membrane leaves the fillet"
                        : "the contact edge, where the membrane leaves the sphere";
-    if (sol.max_i1_r < sol.r_corner) return "on the sphere, between the pole and the contact edge";
+    if (sol.max_i1_r < sol.r_corner)
+      return fillet ? "on the fillet, between the flat face and the contact edge"
+                    : "on the sphere, between the pole and the contact edge";
     if (with_side && sol.max_i1_r < sol.r_top) return "on the cylinder side of the probe";
     return "Part I, off the indenter";
   }
@@ -543,11 +595,12 @@ class SphereTippedContact {
   // side.
   double free_part_inner_height(const ScaledSolution& sol) const {
     if (sol.configuration == Configuration::Unloaded) return 0.0;
-    if (sol.configuration == Configuration::SlipWithPartTwo) return s_.a + sol.part_two_length;
+    if (sol.configuration == Configuration::SlipWithPartTwo) return arc() + sol.part_two_length;
     return cap_height(sol.corner_slope);
   }
 
-  // The cap from the pole, then the side, with the contact pressure from normal balance.
+  // The cap from the pole (or the flat face, uniform and without contact pressure), then the
+  // side, with the contact pressure from normal balance.
   void append_contact_fields(const ScaledSolution& sol, const FieldScales& u,
                              MembraneFields& m) const {
     const double big_a = u.clamp_radius_mm, g = u.shear_modulus_mpa;
@@ -555,10 +608,13 @@ class SphereTippedContact {
     for (const auto& sample : sol.part_two) {
       const double r_ref = sample[0], l1 = sample[1], psi = sample[2];
       const bool side = psi > kHalfPiCap;
-      const double radius = side ? s_.a : s_.a * std::sin(psi);
-      const double l2 = r_ref > 0.0 ? radius / r_ref : l1;
+      const bool face = s_.face > 0.0 && psi == 0.0 && r_ref < s_.face / l1;
+      const double radius = side ? s_.a : face ? l1 * r_ref : arc_radius_at(psi);
+      const double l2 = r_ref > 0.0 && !face ? radius / r_ref : l1;
       const auto st = membrane_stress(law_, l1, l2);
-      const double pressure = contact_pressure(l1, l2, st, side) * g * u.thickness_mm / big_a;
+      const double pressure =
+          face ? pressure_ * g * u.thickness_mm / big_a
+               : contact_pressure(l1, l2, st, side, psi) * g * u.thickness_mm / big_a;
       append_point(m,
                    side ? MembranePart::Side : MembranePart::Tip,
                    r_ref * big_a,
@@ -577,21 +633,41 @@ class SphereTippedContact {
   // Normal balance: on the sphere p = (s1 / lambda2 + s2 / lambda1) / a (the true tensions over
   // the sphere's radius, Laplace's law), on the cylinder p = s2 / (lambda1 a); the gas pressure
   // presses the membrane onto the probe and adds to both; normalised by G H / A.
-  double contact_pressure(double l1, double l2, const MembraneStress& st, bool side) const {
+  // On the fillet (radius rho, at polar angle theta, current radius r) the two curvatures
+  // differ: p = s1 / (lambda2 rho) + s2 sin(theta) / (lambda1 r).
+  double contact_pressure(double l1, double l2, const MembraneStress& st, bool side,
+                          double theta = 0.0) const {
+    if (s_.face > 0.0 && !side)
+      return st.s1 / (l2 * arc()) + st.s2 * std::sin(theta) / (l1 * arc_radius_at(theta)) +
+             pressure_;
     return ((side ? 0.0 : st.s1 / l2) + st.s2 / l1) / s_.a + pressure_;
   }
 
   // The gas pressure's resultant on the cap up to polar angle theta, P (a sin(theta))^2 / 2.
   double gas_load(double theta) const {
-    const double r = s_.a * std::sin(theta);
+    const double r = arc_radius_at(theta);
     return 0.5 * pressure_ * r * r;
   }
 
-  // Height above the pole of the point at polar angle theta on the hemisphere.
-  double cap_height(double theta) const { return s_.a * (1.0 - std::cos(theta)); }
+  // The arc's radius rho (a for the hemisphere) and the current radius of its point at polar
+  // angle theta, b + rho sin(theta) (b = 0 for the hemisphere: a sin(theta) to the last bit).
+  double arc() const { return s_.a - s_.face; }
+  double arc_radius_at(double theta) const { return s_.face + arc() * std::sin(theta); }
+  SphereCapSystem<Law> cap_system() const {
+    return {law_, arc(), locking_i1_, s_.mu, pressure_, s_.face};
+  }
+  // The arc's start at the flat face's edge, R = b / l: the face's uniform stretch l, its stored
+  // energy W(l, l) R^2 / 2.
+  SphereCapState face_edge_state(double l, double r_edge) const {
+    const auto st = membrane_stress(law_, l, l);
+    return {0.0, l, 0.5 * strain_energy_density(law_, l, l, st.i1) * r_edge * r_edge};
+  }
+
+  // Height above the pole of the point at polar angle theta on the hemisphere (on the arc).
+  double cap_height(double theta) const { return arc() * (1.0 - std::cos(theta)); }
   // ... and of the profile point psi (sample coordinate): past pi/2, up the cylinder.
   double profile_height(double psi) const {
-    return psi <= kHalfPiCap ? cap_height(psi) : s_.a * (1.0 + (psi - kHalfPiCap));
+    return psi <= kHalfPiCap ? cap_height(psi) : arc() * (1.0 + (psi - kHalfPiCap));
   }
 
   // The cap that carries f exactly at the equator: its pole stretch and its end.
@@ -695,6 +771,9 @@ class SphereTippedContact {
   static constexpr const char* kFrictionNotImplemented =
       "outside the sphere-tipped model: the contact reaches the cylinder side, where friction is "
       "not implemented yet (friction on the hemisphere is; without friction the side is solved)";
+  static constexpr const char* kFilletStickNotImplemented =
+      "the stick stage on the filleted flat punch is not implemented yet: only sliding (stick "
+      "rule none) is solved";
   static constexpr const char* kStickNotImplemented =
       "the stick stage on the sphere-tipped probe is not implemented yet: only sliding (stick "
       "rule none) is solved";
@@ -706,6 +785,7 @@ class SphereTippedContact {
   static constexpr double kPoleStartFriction = 1e-5;
   static constexpr double kHalfPiCap = boost::math::constants::half_pi<double>();
   static constexpr double kEdgeTol = 1e-9;
+  static constexpr int kFacePoints = 4;  // samples of the uniform flat face, pole included
 
   bool pole_is_largest(const ScaledSolution& sol) const {
     const double l = sol.part_three_stretch;
@@ -726,7 +806,7 @@ class SphereTippedContact {
   // Part I leaving the sphere tangentially at the contact edge: slope theta, t = R s1 cos(theta).
   FreeStart edge_start(const CapEnd& end) const {
     const double theta = end.state[0], l1 = end.state[1];
-    const double l2 = s_.a * std::sin(theta) / end.r;
+    const double l2 = arc_radius_at(theta) / end.r;
     const double t = end.vertical / std::tan(theta);  // R s1 cos(theta), R s1 sin(theta) = f
     return FreeStart{{t, l1, l2, 0.0}, end.r, theta, 1.0};
   }
@@ -739,15 +819,15 @@ class SphereTippedContact {
   // The cap's largest I1 (refined between samples) into the solution's, if it is larger.
   void track_cap_maximum(const InteriorMaximum<SphereCapState>& i1_max, double,
                          ScaledSolution& sol) const {
-    const SphereCapSystem<Law> cap{law_, s_.a, locking_i1_, s_.mu, pressure_};
+    const SphereCapSystem<Law> cap = cap_system();
     auto cap_i1 = [&](double r, const SphereCapState& y) {
-      return first_invariant(y[1], s_.a * std::sin(y[0]) / r);
+      return first_invariant(y[1], arc_radius_at(y[0]) / r);
     };
     const auto found = refined_maximum(i1_max, cap, cap_i1);
     if (found.value > sol.max_i1) {
       sol.max_i1 = found.value;
       sol.max_i1_r = found.r;
-      sol.max_i1_radius = s_.a * std::sin(found.state[0]);
+      sol.max_i1_radius = arc_radius_at(found.state[0]);
     }
   }
 
@@ -809,14 +889,173 @@ class SphereTippedContact {
       sol.part_two = std::move(cap_samples);
       // The side's samples were taken downward; psi = pi/2 + (height above the equator) / a.
       for (auto it = side_samples.rbegin(); it != side_samples.rend(); ++it)
-        sol.part_two.push_back({(*it)[0], (*it)[1], kHalfPiCap + (length - (*it)[2]) / s_.a});
+        sol.part_two.push_back({(*it)[0], (*it)[1], kHalfPiCap + (length - (*it)[2]) / arc()});
     }
     sol.r_corner = r_eq;
     sol.part_three_stretch = onset->stretch;
     sol.part_two_length = length;
-    sol.depth += s_.a + length;
+    sol.depth += arc() + length;
     sol.tension_ratio = 1.0;
     return true;
+  }
+
+  // ---- Coulomb slip on the side, past the fillet's equator (filleted flat punch only; the
+  // sphere-tipped probe keeps its status, docs/model.md §19).  Both sliding configurations are
+  // shot on the face stretch l: the cap (face and fillet) to the equator, where it carries
+  // R_e s1 <= f, then the side marched up from it with friction (PartTwoSystem: d(R s1)/dR =
+  // mu s2) until R s1 = f, where Part I leaves vertically.  An initial-value problem from the
+  // axis outward, as the flat punch's under a gas pressure with friction.
+  bool rough_side_solved() const { return s_.mu != 0.0 && s_.face > 0.0; }
+
+  struct RoughSide {
+    FreeStart start;
+    double length;  // the side's current length, equator to top
+    CapEnd cap;     // the cap's end at the equator
+  };
+  // observe(R, (lambda1, y)) at the side's steps, y = minus the height above the equator.  Empty
+  // when the cap carries more than f at the equator (no side; 1e-9 relative is the onset
+  // itself) or cannot be marched.  A top beyond the clamp stands in as Part I of zero length at
+  // the clamp, whose residual a - L0 < 0 the top's approach to the clamp tends to.
+  template <class Observer>
+  std::optional<RoughSide> rough_side(double l, double f, Observer&& observe,
+                                      std::vector<PartTwoSample>* cap_samples = nullptr,
+                                      InteriorMaximum<SphereCapState>* i1_max = nullptr) const {
+    const auto end = march(l, std::numeric_limits<double>::infinity(), cap_samples, i1_max);
+    if (!end || !end->at_equator || !(f > 0.0)) return std::nullopt;
+    const double q_equator = end->vertical;  // R s1 there
+    if (!(q_equator <= f * (1.0 + 1e-9))) return std::nullopt;
+    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, PartTwoEquation::RingBalance, locking_i1_};
+    IntegrationSettings integration = part_one_.settings().integration;
+    if (cap_samples) integration.max_step = s_.a / std::max(1, part_one_.settings().field_points);
+    auto excess = [&](double r, const PartTwoState& y) {
+      const double v = r * membrane_stress(law_, y[0], s_.a / r).s1 - f;
+      return std::isfinite(v) ? v : 1.0;
+    };
+    PartTwoState y{end->state[1], 0.0}, y_prev = y;
+    double r_top = end->r, r_prev = end->r, r_hit = -1.0;
+    if (q_equator >= f) {
+      observe(r_top, y);
+    } else {
+      if (!integrate_part(side, y, end->r, 1.0, integration, [&](double r, const PartTwoState& x) {
+            if (excess(r, x) >= 0.0) {
+              r_hit = r;
+              return false;
+            }
+            r_prev = r;
+            y_prev = x;
+            observe(r, x);
+            return true;
+          }))
+        return std::nullopt;
+      if (r_hit < 0.0)
+        return RoughSide{{{0.0, y[0], s_.a, 0.0}, 1.0, kHalfPiCap, 1.0}, -y[1], *end};
+      auto gap_at = [&](double r) {
+        const auto x = step_or_advance(side, y_prev, r_prev, r, part_one_.settings().integration);
+        return x ? excess(r, *x) : 1.0;
+      };
+      const double g_prev = gap_at(r_prev), g_hit = gap_at(r_hit);
+      if (!(g_prev * g_hit <= 0.0)) return std::nullopt;
+      std::uintmax_t iterations = 100;
+      const auto bracket =
+          boost::math::tools::toms748_solve(gap_at,
+                                            r_prev,
+                                            r_hit,
+                                            g_prev,
+                                            g_hit,
+                                            boost::math::tools::eps_tolerance<double>(50),
+                                            iterations);
+      r_top = 0.5 * (bracket.first + bracket.second);
+      const auto x = step_or_advance(side, y_prev, r_prev, r_top, part_one_.settings().integration);
+      if (!x) return std::nullopt;
+      y = *x;
+      observe(r_top, y);
+    }
+    // lambda1 at the top from R s1 = f exactly, as the frictionless start has it.
+    const double l2 = s_.a / r_top;
+    const auto l1 = invert_radial_stress(law_, f / r_top, l2, y[0]);
+    if (!l1) return std::nullopt;
+    return RoughSide{{{0.0, *l1, l2, 0.0}, r_top, kHalfPiCap, 1.0}, -y[1], *end};
+  }
+
+  // The cap again (samples, largest I1) and the side up to Part I's start (samples from the
+  // equator up, psi = pi/2 + height / rho; its largest I1 refined between steps).
+  bool attach_rough_side(double l, bool record, ScaledSolution& sol) const {
+    InteriorMaximum<SphereCapState> i1_max;
+    InteriorMaximum<PartTwoState> side_max;
+    std::vector<PartTwoSample> cap_samples, side_samples;
+    const auto side = rough_side(
+        l,
+        sol.f,
+        [&](double r, const PartTwoState& y) {
+          if (record) side_samples.push_back({r, y[0], y[1]});
+          side_max.observe(r, y, first_invariant(y[0], s_.a / r));
+        },
+        record ? &cap_samples : nullptr,
+        &i1_max);
+    if (!side) {
+      sol.status = Status::NoConvergence;
+      sol.message = "the side with friction could not be marched up to where Part I starts again";
+      return false;
+    }
+    track_cap_maximum(i1_max, l, sol);
+    const PartTwoSystem<Law> side_system{
+        law_, s_.a, s_.mu, PartTwoEquation::RingBalance, locking_i1_};
+    if (side_max.observed()) {
+      const auto found =
+          refined_maximum(side_max, side_system, [&](double r, const PartTwoState& x) {
+            return first_invariant(x[0], s_.a / r);
+          });
+      if (found.value > sol.max_i1) {
+        sol.max_i1 = found.value;
+        sol.max_i1_r = found.r;
+        sol.max_i1_radius = s_.a;
+      }
+    }
+    if (record) {
+      sol.part_two = std::move(cap_samples);
+      for (const auto& x : side_samples)
+        sol.part_two.push_back({x[0], x[1], kHalfPiCap - x[2] / arc()});
+    }
+    sol.r_corner = side->cap.r;
+    sol.part_three_stretch = l;
+    sol.part_two_length = side->length;
+    sol.depth += arc() + side->length;
+    sol.tension_ratio = 1.0;
+    return true;
+  }
+
+  // Friction on the side: the face stretch below the equator onset's (where the side has zero
+  // length and the residual is the side indicator, >= 0), from the first of 1 + (onset - 1)
+  // 2^-k (k = 1, 2, ...) with a negative clamp residual (a longer side, its top nearer the
+  // clamp); the candidate before it caps the bracket.
+  template <class Residual>
+  ShootingPlan rough_side_plan(const EquatorOnset& onset, double g_onset, Residual& counted) const {
+    ShootingPlan plan;
+    plan.configuration = Configuration::SlipWithPartTwo;
+    double cap = onset.stretch, g_cap = g_onset;
+    for (int k = 1; k <= 60; ++k) {
+      const double l = 1.0 + (onset.stretch - 1.0) * std::ldexp(1.0, -k);
+      const auto g = counted(Configuration::SlipWithPartTwo, l);
+      if (g && *g < 0.0) {
+        plan.lo = l;
+        plan.g_lo = *g;
+        plan.cap = cap;
+        plan.g_cap = g_cap;
+        plan.no_root_message =
+            "filleted flat-punch shooting (side with friction) found no face stretch meeting "
+            "the clamp condition";
+        return plan;
+      }
+      if (g) {
+        cap = l;
+        g_cap = *g;
+      }
+    }
+    plan.status = Status::NoConvergence;
+    plan.message =
+        "filleted flat-punch shooting (side with friction): no face stretch with a "
+        "negative clamp residual";
+    return plan;
   }
 
   const FreePart<Law>& part_one_;
