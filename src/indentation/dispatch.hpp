@@ -3,6 +3,7 @@
 // time (std::variant).  The indenter is dispatched here, once per solve, to the shooting for its
 // contact model; the law travels as a RuntimeLaw, which picks the law at each stress evaluation
 // (mechanics/runtime_law.hpp).  A new indenter adds its contact model here.
+#include <numbers>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -38,6 +39,25 @@ template <class Law>
 SphereTippedContact<Law> contact_model_of(const SphereTipped&);  // declared for its type only
 inline SphereTippedSettings contact_settings(const Problem& p, const SphereTipped& probe) {
   return {probe.radius_mm / reference_clamp_radius_mm(p), p.friction};
+}
+
+// The ball is the sphere-tipped probe of its own radius up to its equator (the rod never
+// touches before); the cone, its tip sphere followed by the cone up to the shank.
+template <class Law>
+SphereTippedContact<Law> contact_model_of(const Ball&);  // declared for its type only
+inline SphereTippedSettings contact_settings(const Problem& p, const Ball& ball) {
+  return {ball.ball_radius_mm / reference_clamp_radius_mm(p), p.friction, BeyondTipSphere::Neck};
+}
+
+template <class Law>
+SphereTippedContact<Law> contact_model_of(const Cone&);  // declared for its type only
+inline SphereTippedSettings contact_settings(const Problem& p, const Cone& cone) {
+  const double unit = reference_clamp_radius_mm(p);
+  return {cone.tip_radius_mm / unit,
+          p.friction,
+          BeyondTipSphere::Cone,
+          cone.half_angle_deg * std::numbers::pi / 180.0,
+          cone.radius_mm / unit};
 }
 
 template <class Law, class Shape>
