@@ -230,6 +230,30 @@ TEST(ConeProbe, PressurePositiveOnTheProfileNoPenetration) {
   record("cone_min_contact_pressure_mpa", min_pressure);
 }
 
+// Puncture by the critical I1 on the cone with a 0.2 mm tip (docs/model.md, §15.2): at the pole,
+// equibiaxial (2 L^2 + L^-4 = I1c), with Part I leaving over the kink; with a 0.5 mm tip the
+// contact reaches the shank first, a status naming it, never a number.
+TEST(ConeProbe, PunctureSiteAndTheShank) {
+  const auto pp = predict_puncture(with_probe(Cone{2.0, 30.0, 0.2}));
+  ASSERT_TRUE(pp.ok()) << pp.message;
+  EXPECT_EQ(pp.crack_location, "the pole, under the tip sphere");
+  const double l = pp.part_three_stretch;
+  EXPECT_NEAR(2.0 * l * l + 1.0 / (l * l * l * l), 95.2, 1e-6 * 95.2);
+  EXPECT_GT(pp.state.corner_slope_rad, std::numbers::pi / 3.0);  // over the kink
+  EXPECT_LE(pp.state.corner_slope_rad, std::numbers::pi / 2.0);
+  record("cone_puncture_force_n", pp.force_n);
+  const auto blunt = predict_puncture(with_probe(Cone{2.0, 30.0, 0.5}));
+  EXPECT_FALSE(blunt.ok());
+  EXPECT_NE(blunt.message.find("reaches the shank"), std::string::npos) << blunt.message;
+  std::cout << fmt::format(
+      "cone tip 0.2 mm: puncture at {:.5f} N, {:.4f} mm, exit slope {:.4f} "
+      "rad; tip 0.5 mm: {}\n",
+      pp.force_n,
+      pp.depth_mm,
+      pp.state.corner_slope_rad,
+      blunt.message);
+}
+
 // Coulomb slip on the tip, the cone and the kink (docs/model.md, §15.2): at a fixed depth the
 // force grows with the friction and tends to the frictionless one as mu -> 0 (mu = 1e-4: O(mu),
 // below 1e-3 relative); the indenter's work exceeds the stored energy (dU/ddelta < F, by more
