@@ -243,7 +243,7 @@ TEST(ConeProbe, PunctureSiteAndTheShank) {
   EXPECT_LE(pp.state.corner_slope_rad, std::numbers::pi / 2.0);
   record("cone_puncture_force_n", pp.force_n);
   const auto blunt = predict_puncture(with_probe(Cone{2.0, 30.0, 0.5}));
-  EXPECT_FALSE(blunt.ok());
+  EXPECT_EQ(blunt.status, Status::OutsideModel);
   EXPECT_NE(blunt.message.find("reaches the shank"), std::string::npos) << blunt.message;
   std::cout << fmt::format(
       "cone tip 0.2 mm: puncture at {:.5f} N, {:.4f} mm, exit slope {:.4f} "
