@@ -97,6 +97,16 @@ std::string indenter_repr(const Indenter& indenter) {
     std::string operator()(const SphereTipped& p) const {
       return fmt::format("SphereTipped(radius_mm={:g})", p.radius_mm);
     }
+    std::string operator()(const Ball& p) const {
+      return fmt::format(
+          "Ball(radius_mm={:g}, ball_radius_mm={:g})", p.radius_mm, p.ball_radius_mm);
+    }
+    std::string operator()(const Cone& p) const {
+      return fmt::format("Cone(radius_mm={:g}, half_angle_deg={:g}, tip_radius_mm={:g})",
+                         p.radius_mm,
+                         p.half_angle_deg,
+                         p.tip_radius_mm);
+    }
   };
   return std::visit(Repr{}, indenter);
 }
@@ -276,6 +286,35 @@ void bind_problem(py::module_& m) {
       .def_readonly("radius_mm", &SphereTipped::radius_mm, "hemisphere and cylinder radius a [mm]")
       .def("__repr__", [](const SphereTipped& p) { return indenter_repr(p); });
   copyable(sphere_tipped);
+  py::class_<Ball> ball(m,
+                        "Ball",
+                        "A sphere of radius ball_radius_mm on a rod of radius radius_mm (sliding "
+                        "only;\nsolved up to the ball's equator)");
+  ball.def(py::init([](double radius_mm, double ball_radius_mm) {
+             return Ball{radius_mm, ball_radius_mm};
+           }),
+           py::arg("radius_mm"),
+           py::arg("ball_radius_mm"))
+      .def_readonly("radius_mm", &Ball::radius_mm, "rod radius a [mm]")
+      .def_readonly("ball_radius_mm", &Ball::ball_radius_mm, "ball radius RB [mm] (> a)")
+      .def("__repr__", [](const Ball& p) { return indenter_repr(p); });
+  copyable(ball);
+  py::class_<Cone> cone(m,
+                        "Cone",
+                        "A cone of half-angle half_angle_deg with a spherical tip of radius\n"
+                        "tip_radius_mm tangent to it, on a shank of radius radius_mm "
+                        "(sliding only;\nsolved until the contact reaches the shank)");
+  cone.def(py::init([](double radius_mm, double half_angle_deg, double tip_radius_mm) {
+             return Cone{radius_mm, half_angle_deg, tip_radius_mm};
+           }),
+           py::arg("radius_mm"),
+           py::arg("half_angle_deg"),
+           py::arg("tip_radius_mm"))
+      .def_readonly("radius_mm", &Cone::radius_mm, "shank radius a [mm]")
+      .def_readonly("half_angle_deg", &Cone::half_angle_deg, "half-angle from the axis [deg]")
+      .def_readonly("tip_radius_mm", &Cone::tip_radius_mm, "tip sphere radius RT [mm] (> 0)")
+      .def("__repr__", [](const Cone& p) { return indenter_repr(p); });
+  copyable(cone);
 
   py::class_<Gent> gent(m, "Gent", "Gent law W/G = -(J_lim/2) ln(1 - (I1 - 3)/J_lim)");
   gent.def(py::init([](double j_lim) { return Gent{j_lim}; }), py::arg("j_lim") = Gent{}.j_lim)
@@ -555,7 +594,8 @@ void bind_problem(py::module_& m) {
            py::arg("criteria") = std::vector<FailureCriterion>{})
       .def_readwrite("geometry", &Problem::geometry)
       .def_readwrite("preload", &Problem::preload, "the pre-stretch before indentation (Preload)")
-      .def_readwrite("indenter", &Problem::indenter, "the probe (FlatPunch or SphereTipped)")
+      .def_readwrite(
+          "indenter", &Problem::indenter, "the probe (FlatPunch, SphereTipped, Ball or Cone)")
       .def_readwrite("material", &Problem::material)
       .def_readwrite(
           "friction", &Problem::friction, "Coulomb coefficient mu' (0.18 lubricated, 1.95 dry)")

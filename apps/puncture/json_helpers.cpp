@@ -102,6 +102,15 @@ json problem_json(const Problem& p, std::string_view calibrated) {
   if (const auto* punch = std::get_if<FlatPunch>(&p.indenter);
       punch && punch->fillet_radius_mm > 0.0)
     out["fillet_radius_mm"] = finite(punch->fillet_radius_mm, "fillet radius");
+  if (const auto* ball = std::get_if<Ball>(&p.indenter)) {
+    out["indenter"] = "ball";
+    out["ball_radius_mm"] = finite(ball->ball_radius_mm, "ball radius");
+  }
+  if (const auto* cone = std::get_if<Cone>(&p.indenter)) {
+    out["indenter"] = "cone";
+    out["cone_half_angle_deg"] = finite(cone->half_angle_deg, "cone half-angle");
+    out["tip_radius_mm"] = finite(cone->tip_radius_mm, "tip radius");
+  }
   return out;
 }
 

@@ -12,10 +12,13 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 35> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 38> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"indenter.fillet_radius_mm", "--fillet-radius"},
+    {"indenter.ball_radius_mm", "--ball-radius"},
+    {"indenter.half_angle_deg", "--cone-half-angle"},
+    {"indenter.tip_radius_mm", "--tip-radius"},
     {"geometry.thickness_mm", "--thickness"},
     {"preload.prestretch", "--prestretch"},
     {"preload.pressure_mpa", "--pressure"},

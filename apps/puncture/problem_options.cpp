@@ -179,18 +179,23 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
       app.add_option("--indenter",
                      f.indenter,
                      "Probe shape: flat (the paper's flat-ended cylinder, its corner\n"
-                     "sharp or rounded by --fillet-radius) or\n"
+                     "sharp or rounded by --fillet-radius),\n"
                      "sphere-tipped (a cylinder ending in a hemisphere of the same radius;\n"
                      "sliding only, --stick none; with --friction > 0 only while the contact\n"
-                     "stays on the hemisphere)")
+                     "stays on the hemisphere), ball (a sphere of radius --ball-radius on a\n"
+                     "rod of radius --indenter-radius; solved up to the ball's equator) or\n"
+                     "cone (half-angle --cone-half-angle, spherical tip of radius\n"
+                     "--tip-radius tangent to it, shank of radius --indenter-radius;\n"
+                     "sliding only, solved until the contact reaches the shank)")
           ->group(kGeometry)
-          ->check(CLI::IsMember({"flat", "sphere-tipped"}))
+          ->check(CLI::IsMember({"flat", "sphere-tipped", "ball", "cone"}))
           ->capture_default_str();
   f.indenter_radius_option =
       app.add_option("--indenter-radius",
                      f.indenter_radius_mm,
                      "Radius a of the indenter's cylinder (and of the sphere-tipped\n"
-                     "probe's hemisphere) [mm] (> 0 and smaller than the clamp radius)")
+                     "probe's hemisphere; the ball's rod; the cone's shank) [mm] (> 0 and\n"
+                     "smaller than the clamp radius)")
           ->group(kGeometry)
           ->capture_default_str();
   f.fillet_radius_option =
@@ -202,6 +207,25 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "corner; > 0: sliding only, --stick none, no gas pressure)")
           ->group(kGeometry)
           ->capture_default_str();
+  f.ball_radius_option =
+      app.add_option("--ball-radius",
+                     f.ball_radius_mm,
+                     "Radius RB of the ball, with --indenter ball [mm] (larger than the\n"
+                     "rod's --indenter-radius, smaller than the clamp radius)")
+          ->group(kGeometry);
+  f.cone_half_angle_option =
+      app.add_option("--cone-half-angle",
+                     f.cone_half_angle_deg,
+                     "Half-angle of the cone from its axis, with --indenter cone [degrees]\n"
+                     "(in (0, 90))")
+          ->group(kGeometry);
+  f.tip_radius_option =
+      app.add_option("--tip-radius",
+                     f.tip_radius_mm,
+                     "Radius RT of the cone's spherical tip, with --indenter cone [mm] (> 0:\n"
+                     "a sharp cone makes the stretch at its apex unbounded at a finite\n"
+                     "force; RT cos(half-angle) <= --indenter-radius)")
+          ->group(kGeometry);
   app.add_option("--thickness", f.thickness_mm, "Undeformed membrane thickness H [mm] (> 0)")
       ->group(kGeometry)
       ->capture_default_str();
@@ -398,17 +422,41 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
 
 namespace {
 
+// The ball's and the cone's dimensions: required with their shape, refused with another.
+void append_probe_shape_flag_errors(const ProblemFlags& f, std::vector<std::string>& errors) {
+  const std::array<std::pair<const CLI::Option*, const char*>, 3> shape_flags{
+      {{f.ball_radius_option, "ball"},
+       {f.cone_half_angle_option, "cone"},
+       {f.tip_radius_option, "cone"}}};
+  for (const auto& [option, shape] : shape_flags) {
+    if (!option) continue;
+    if (f.indenter == shape && !given(option))
+      errors.push_back(
+          fmt::format("{}: required with --indenter {} (no default: give the probe's dimension)",
+                      option->get_name(),
+                      shape));
+    else if (f.indenter != shape && given(option))
+      errors.push_back(fmt::format(
+          "{}: applies only to --indenter {}, not {}", option->get_name(), shape, f.indenter));
+  }
+}
+
 Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   Problem p;
   p.geometry.clamp_radius_mm = f.clamp_radius_mm;
   if (f.indenter == "sphere-tipped")
     p.indenter = SphereTipped{f.indenter_radius_mm};
+  else if (f.indenter == "ball")
+    p.indenter = Ball{f.indenter_radius_mm, f.ball_radius_mm};
+  else if (f.indenter == "cone")
+    p.indenter = Cone{f.indenter_radius_mm, f.cone_half_angle_deg, f.tip_radius_mm};
   else
     p.indenter = FlatPunch{f.indenter_radius_mm, f.fillet_radius_mm};
-  if (f.indenter == "sphere-tipped" && given(f.fillet_radius_option))
+  if (f.indenter != "flat" && given(f.fillet_radius_option))
     errors.push_back(
-        "--fillet-radius: applies to the flat punch only (--indenter flat); the sphere-tipped "
-        "probe is rounded whole");
+        "--fillet-radius: applies to the flat punch only (--indenter flat); the other "
+        "probes are rounded by their own shape");
+  append_probe_shape_flag_errors(f, errors);
   if (f.test == kAstmF1306) {
     // The standard fixes the probe and the opening: a flag that sets them too is a conflict.
     for (const CLI::Option* given : {f.indenter_option,

@@ -19,6 +19,9 @@ struct ProblemFlags {
   std::string indenter = "flat";
   double indenter_radius_mm = radius_mm(defaults.indenter);
   double fillet_radius_mm = 0.0;  // the flat punch's corner fillet (0: sharp)
+  double ball_radius_mm = 0.0;       // read only when --ball-radius is given
+  double cone_half_angle_deg = 0.0;  // read only when --cone-half-angle is given
+  double tip_radius_mm = 0.0;        // read only when --tip-radius is given
   double thickness_mm = defaults.geometry.thickness_mm;
   double prestretch = defaults.preload.prestretch;
   double pressure_mpa = defaults.preload.pressure_mpa;
@@ -47,6 +50,9 @@ struct ProblemFlags {
   CLI::Option* indenter_option = nullptr;
   CLI::Option* indenter_radius_option = nullptr;
   CLI::Option* fillet_radius_option = nullptr;
+  CLI::Option* ball_radius_option = nullptr;
+  CLI::Option* cone_half_angle_option = nullptr;
+  CLI::Option* tip_radius_option = nullptr;
   CLI::Option* j_lim_option = nullptr;
   CLI::Option* mr_alpha_option = nullptr;
   CLI::Option* shear_modulus_option = nullptr;

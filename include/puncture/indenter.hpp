@@ -23,13 +23,34 @@ struct SphereTipped {
   double radius_mm = 2.0;  // hemisphere and cylinder radius a [mm]
 };
 
-using Indenter = std::variant<FlatPunch, SphereTipped>;
+// A sphere of radius RB on a rod of radius a < RB: up to the ball's equator the sphere-tipped
+// probe of radius RB.  Past the equator the membrane would wrap the upper hemisphere and neck
+// above it, which is not solved: a status (docs/model.md, §15.1).
+struct Ball {
+  double radius_mm = 1.0;       // rod radius a [mm]
+  double ball_radius_mm = 2.0;  // ball radius RB [mm] (> a)
+};
 
-// The probe's radius a [mm] (the cylinder's, for the flat punch; the hemisphere's and the
-// cylinder's, for the sphere-tipped probe).
+// A cone of half-angle alpha (from the axis) with a spherical tip of radius RT tangent to it,
+// ending on a cylindrical shank of radius a (RT cos(alpha) <= a).  A sharp cone (RT = 0) would
+// make the stretch at the apex unbounded at a finite force.  Sliding (Coulomb slip on the tip,
+// the cone and the kink); a contact that reaches the shank is a status (docs/model.md, §15.2).
+struct Cone {
+  double radius_mm = 2.0;        // shank radius a [mm]
+  double half_angle_deg = 30.0;  // cone half-angle alpha from the axis [degrees], in (0, 90)
+  double tip_radius_mm = 0.5;    // radius RT of the spherical tip [mm] (> 0)
+};
+
+using Indenter = std::variant<FlatPunch, SphereTipped, Ball, Cone>;
+
+// The probe's radius a [mm]: the cylinder's, for the flat punch; the hemisphere's and the
+// cylinder's, for the sphere-tipped probe; the rod's, for the ball (the ball's own radius is
+// Ball::ball_radius_mm); the shank's, for the cone.
 double radius_mm(const Indenter& indenter);
 // Name and dimensions, e.g. "flat punch, radius 2 mm", "sphere-tipped probe, radius 1.6 mm",
-// "flat punch, radius 2 mm, corner fillet radius 0.5 mm".
+// "flat punch, radius 2 mm, corner fillet radius 0.5 mm",
+// "ball, radius 3 mm, on a rod of radius 1 mm", "cone, half-angle 30 deg, tip radius 0.5 mm,
+// shank radius 2 mm".
 std::string describe(const Indenter& indenter);
 // Whether it is the flat punch with a sharp corner (fillet radius 0), the probe of the finite
 // elements, verify(), the friction calibration and the energy-release criterion.

@@ -315,6 +315,21 @@ def test_sphere_tipped_probe_matches_cli(cli):
     assert tip.any() and (state.fields.contact_pressure_mpa[tip] > 0).all()
 
 
+def test_cone_and_ball_probes_match_cli(cli):
+    cone = pu.Cone(radius_mm=2.0, half_angle_deg=30.0, tip_radius_mm=0.2)
+    assert repr(cone) == "Cone(radius_mm=2, half_angle_deg=30, tip_radius_mm=0.2)"
+    prediction = pu.predict_puncture(pu.Problem(indenter=cone, friction=0.0))
+    ours = cli.json("puncture", "--indenter", "cone", "--cone-half-angle", "30",
+                    "--tip-radius", "0.2", "--friction", "0")
+    assert ours["inputs"]["indenter"] == "cone"
+    assert prediction.force_n == pytest.approx(ours["puncture"]["force_n"], rel=1e-12)
+    ball = pu.Ball(radius_mm=1.0, ball_radius_mm=3.0)
+    assert repr(ball) == "Ball(radius_mm=1, ball_radius_mm=3)"
+    state = pu.solve_at_depth(pu.Problem(indenter=ball, friction=0.0), 5.0)
+    sphere = pu.solve_at_depth(pu.Problem(indenter=pu.SphereTipped(3.0), friction=0.0), 5.0)
+    assert state.force_n == pytest.approx(sphere.force_n, rel=1e-9)
+
+
 def test_yeoh_law_from_its_coefficients_matches_cli(cli):
     m = pu.Material.yeoh(c10_mpa=0.03, c20_mpa=0.0015, c30_mpa=0.00003)
     assert m.shear_modulus_mpa == 0.06 and isinstance(m.law, pu.Yeoh)

@@ -38,6 +38,11 @@ INVALID = [
     # the sphere-tipped probe is sliding only, for now
     ({"indenter": pu.SphereTipped(), "friction": 0, "stick": "always"},
      ["--indenter", "sphere-tipped", "--friction", "0", "--stick", "always"], ["stick.rule"]),
+    ({"indenter": pu.Ball(2.0, 2.0), "friction": 0},
+     ["--indenter", "ball", "--ball-radius", "2", "--friction", "0"], ["indenter.ball_radius_mm"]),
+    ({"indenter": pu.Cone(2.0, 90.0, 0.5), "friction": 0},
+     ["--indenter", "cone", "--cone-half-angle", "90", "--tip-radius", "0.5", "--friction", "0"],
+     ["indenter.half_angle_deg"]),
     ({"geometry": pu.Geometry(clamp_radius_mm=-1), "friction": -1},
      ["--clamp-radius", "-1", "--friction", "-1"], ["geometry.clamp_radius_mm", "friction"]),
 ]

@@ -3,6 +3,7 @@
 // time (std::variant).  The indenter is dispatched here, once per solve, to the shooting for its
 // contact model; the law travels as a RuntimeLaw, which picks the law at each stress evaluation
 // (mechanics/runtime_law.hpp).  A new indenter adds its contact model here.
+#include <numbers>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -45,8 +46,30 @@ inline SphereTippedSettings contact_settings(const Problem& p, const SphereTippe
 // sharp punch (rho = 0) keeps FlatPunchContact.
 inline SphereTippedSettings filleted_settings(const Problem& p, const FlatPunch& punch) {
   const double length = reference_clamp_radius_mm(p);
-  return {
-      punch.radius_mm / length, p.friction, (punch.radius_mm - punch.fillet_radius_mm) / length};
+  return {.a = punch.radius_mm / length,
+          .mu = p.friction,
+          .face = (punch.radius_mm - punch.fillet_radius_mm) / length};
+}
+
+// The ball is the sphere-tipped probe of its own radius up to its equator (the rod never
+// touches before); the cone, its tip sphere followed by the cone up to the shank.
+template <class Law>
+SphereTippedContact<Law> contact_model_of(const Ball&);  // declared for its type only
+inline SphereTippedSettings contact_settings(const Problem& p, const Ball& ball) {
+  return {.a = ball.ball_radius_mm / reference_clamp_radius_mm(p),
+          .mu = p.friction,
+          .beyond = BeyondTipSphere::Neck};
+}
+
+template <class Law>
+SphereTippedContact<Law> contact_model_of(const Cone&);  // declared for its type only
+inline SphereTippedSettings contact_settings(const Problem& p, const Cone& cone) {
+  const double unit = reference_clamp_radius_mm(p);
+  return {.a = cone.tip_radius_mm / unit,
+          .mu = p.friction,
+          .beyond = BeyondTipSphere::Cone,
+          .cone_half_angle = cone.half_angle_deg * std::numbers::pi / 180.0,
+          .shank = cone.radius_mm / unit};
 }
 
 template <class Law, class Shape>

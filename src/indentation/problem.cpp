@@ -11,6 +11,7 @@
 #include <variant>
 
 #include "failure/cut_membrane.hpp"
+#include "indentation/probe_shape_errors.hpp"
 #include "mechanics/falling_stress.hpp"
 #include "mechanics/membrane_validation.hpp"
 #include "puncture/energy_release.hpp"
@@ -411,6 +412,7 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
                                     "yet: stick rule must be 'none', got '{}'",
                                     to_string(s.rule))});
   }
+  detail::append_probe_shape_errors(errors, p);
   if (s.rule == StickRule::Force || s.rule == StickRule::Depth ||
       s.rule == StickRule::EdgeTension) {
     if (!std::isfinite(s.threshold) || s.threshold <= 0.0)

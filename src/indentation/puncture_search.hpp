@@ -245,7 +245,11 @@ PuncturePrediction find_puncture_by(const Problem& p, const SolverOptions& optio
   const double critical = critical_value(criterion);
   if (const double reached = measure(sol); !at_switch && reached < critical * (1.0 - 1e-6)) {
     const auto beyond = shooting.solve(stage, *f_puncture * (1.0 + 1e-9));
-    out.status = Status::NotReached;
+    // Where the states end because the model does (friction on the sphere-tipped probe's side,
+    // the ball's equator, the cone's shank), the answer is the model's limit, not the membrane's.
+    out.status = !beyond.ok() && failure_kind(beyond.status) == FailureKind::OutsideModel
+                     ? Status::OutsideModel
+                     : Status::NotReached;
     out.message = fmt::format(
         "no puncture found: in the {} stage the {} reaches only {:.8g} (critical {:g}) "
         "at {:.6g} N, where the solutions end{}",

@@ -472,6 +472,15 @@ class IndentationShooting {
     sol.shooting_tol = settings().shooting_tol;
     if (std::abs(sol.residual) <= settings().shooting_tol) {
       accept_state(sol);
+    } else if (sol.residual == kTurnedBack) {
+      // The bracket closed on the jump from a Part I that turns back (hoop compression next to
+      // the probe, e.g. a sharp cone at small forces) to one that overshoots: no tension-only
+      // state in between.
+      sol.status = Status::Wrinkles;
+      sol.message =
+          "Part I turns back towards the axis next to the probe at every parameter below the "
+          "clamp condition: the hoop stress there turns compressive and the membrane wrinkles, "
+          "outside the tension-only membrane theory";
     } else {
       sol.status = Status::NoConvergence;
       sol.message = fmt::format("the shooting stalled at clamp residual {:.3g}", sol.residual);

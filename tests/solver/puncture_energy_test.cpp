@@ -127,6 +127,8 @@ INSTANTIATE_TEST_SUITE_P(
                    true},
         EnergyCase{"FlatPrestretched", prestretched(paper_problem(Gent{125.0}, 0.0), 1.25), true},
         EnergyCase{
+            "Cone", with_indenter(paper_problem(Gent{125.0}, 0.0), Cone{2.0, 30.0, 0.2}), true},
+        EnergyCase{
             "SphereTippedInflated",
             pressurised(with_indenter(paper_problem(Gent{125.0}, 0.0), SphereTipped{2.0}), 3e-4),
             true}),

@@ -44,12 +44,21 @@
 
 namespace puncture::detail {
 
+// What follows the tip sphere (docs/model.md, §15): the sphere-tipped probe's cylinder side past
+// the equator; nothing the model follows past the equator (a ball on a thinner rod: the membrane
+// would neck above it, a status); or a cone tangent to the sphere up to a convex kink onto the
+// shank (the membrane may leave the kink with a line force; wrapping the shank is a status).
+enum class BeyondTipSphere { CylinderSide, Neck, Cone };
+
 struct SphereTippedSettings {
   double a;   // tip (and cylinder) radius / stress-free clamp radius A / L0
   double mu;  // Coulomb friction coefficient (on the hemisphere; the side only without)
   // The flat punch with a rounded corner (docs/model.md §19) is this probe with a flat face of
   // radius b = a - rho inside an arc of radius rho: b / (A / L0); 0 for the hemisphere.
   double face = 0.0;
+  BeyondTipSphere beyond = BeyondTipSphere::CylinderSide;
+  double cone_half_angle = 0.0;  // the cone's half-angle from the axis [rad] (Cone only)
+  double shank = 0.0;            // the shank's radius / (A / L0) (Cone only)
 };
 
 // The cap: the membrane on the hemisphere of radius a, state (theta, lambda1, e) along the
@@ -72,8 +81,17 @@ struct SphereCapSystem {
   // The filleted flat punch: the arc (radius a here: rho) starts at the flat face's edge, current
   // radius b + a sin(theta) (0 for the hemisphere).
   double face = 0.0;
+  // Past this polar angle the profile is the cone tangent to the sphere there (infinity: the
+  // sphere all along); x[0] is then the length along the profile from the pole over a.
+  double tangency = std::numeric_limits<double>::infinity();
+  // Which equations: the sphere's or the cone's by x[0], or one of them throughout (a march
+  // integrates each part with its own, so that no stage of a step near the junction switches
+  // between them: with friction the traction jumps there).
+  enum class Part { ByPosition, Sphere, Cone } part = Part::ByPosition;
 
   void operator()(const SphereCapState& x, SphereCapState& dx, double r_ref) const {
+    if (part == Part::Cone || (part == Part::ByPosition && x[0] > tangency))
+      return on_cone(x, dx, r_ref);
     const double theta = x[0], l1 = x[1];
     const double l2 = (face + a * std::sin(theta)) / r_ref;
     if (!(l1 > 0.0) || !(l2 > 0.0)) return outside_domain(dx);
@@ -90,6 +108,24 @@ struct SphereCapSystem {
                   : std::cos(theta) * st.s2 +
                         mu * std::sin(theta) * (st.s1 * l1 / l2 + st.s2 + pressure * a * l1) +
                         (face == 0.0 ? 0.0 : mu * face * (st.s1 * l1 / (l2 * a) + pressure * l1));
+    dx[1] = (tangential - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
+    dx[2] = strain_energy_density(law, l1, l2, st.i1) * r_ref;
+  }
+
+  // On the cone (no gas): a straight meridian at the slope `tangency`, r = a (sin(tangency) +
+  // (psi - tangency) cos(tangency)); the meridian's curvature is 0, so the contact pressure is the
+  // hoop tension's alone, p r lambda1 = s2 sin(slope), and d(R s1)/dR = s2 (cos(slope) + mu
+  // sin(slope)) (docs/model.md, §15.2).
+  void on_cone(const SphereCapState& x, SphereCapState& dx, double r_ref) const {
+    const double l1 = x[1], c = std::cos(tangency);
+    const double l2 = a * (std::sin(tangency) + (x[0] - tangency) * c) / r_ref;
+    if (!(l1 > 0.0) || !(l2 > 0.0)) return outside_domain(dx);
+    const auto st = membrane_stress(law, l1, l2);
+    if (!(st.i1 < locking_i1) || !(st.ds1_dl1 > 0.0) || !std::isfinite(st.ds1_dl1))
+      return outside_domain(dx);
+    const double dl2 = (l1 * c - l2) / r_ref;
+    dx[0] = l1 / a;
+    const double tangential = mu == 0.0 ? c * st.s2 : (c + mu * std::sin(tangency)) * st.s2;
     dx[1] = (tangential - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
     dx[2] = strain_energy_density(law, l1, l2, st.i1) * r_ref;
   }
@@ -142,7 +178,12 @@ class SphereTippedContact {
         law_(part_one.law()),
         s_(settings),
         locking_i1_(part_one.locking_i1()),
-        pressure_(part_one.pressure()) {}
+        pressure_(part_one.pressure()),
+        tangency_(cone() ? kHalfPiCap - settings.cone_half_angle : kHalfPiCap),
+        side_radius_(cone() ? settings.shank : settings.a),
+        end_psi_(cone() ? tangency_ + (settings.shank - settings.a * std::sin(tangency_)) /
+                                          (settings.a * std::cos(tangency_))
+                        : kHalfPiCap) {}
 
   // The pole stretch exceeds 1.
   double parameter_floor(Configuration) const { return 1.0; }
@@ -154,6 +195,7 @@ class SphereTippedContact {
     SphereCapState state{};
     double vertical = 0.0;    // R s1 sin(theta) there: the membrane's vertical pull
     double carried = 0.0;     // ... plus the gas pressure on the cap: the force the cap carries
+    double pull = 0.0;        // R s1 there (cone): the most a vertical exit over the kink can carry
     double wrinkle_r = -1.0;  // where the hoop stress first turns compressive (with i1_max):
     double wrinkle_radius = -1.0;  // reference and current radius
   };
@@ -167,7 +209,9 @@ class SphereTippedContact {
                               InteriorMaximum<SphereCapState>* i1_max = nullptr) const {
     if (!(l > 0.0) || !std::isfinite(l) || !(first_invariant(l, l) < locking_i1_))
       return std::nullopt;
-    const SphereCapSystem<Law> cap = cap_system();
+    // The sphere's equations first (the cone's march switches to the cone's at the junction).
+    auto cap = cap_system(cone() ? SphereCapSystem<Law>::Part::Sphere
+                                 : SphereCapSystem<Law>::Part::ByPosition);
     // theta = kPoleStart there (closer with friction: that start is exact to O(R^2) only; the
     // neglected terms are O((mu theta)^2) ~ 1e-10 mu^2 relative at theta = 1e-5).  With a flat
     // face the arc starts at its edge, R = b / l, with the face's uniform state.
@@ -178,13 +222,13 @@ class SphereTippedContact {
                            ? face_edge_state(l, r_start)
                            : sphere_cap_pole_state(law_, s_.a, l, r_start, s_.mu, pressure_);
     auto vertical = [&](double r, const SphereCapState& x) {
-      return r * membrane_stress(law_, x[1], arc_radius_at(x[0]) / r).s1 * std::sin(x[0]);
+      return r * membrane_stress(law_, x[1], radius_at(x[0]) / r).s1 * std::sin(slope_at(x[0]));
     };
     auto carried = [&](double r, const SphereCapState& x) {
       return pressure_ == 0.0 ? vertical(r, x) : vertical(r, x) + gas_load(x[0]);
     };
     auto crossed = [&](double r, const SphereCapState& x) {
-      return x[0] >= kHalfPiCap || carried(r, x) >= f;
+      return x[0] >= end_psi_ || carried(r, x) >= f;
     };
     double r_prev = r_start, r_hit = -1.0, wrinkle_r = -1.0, wrinkle_radius = -1.0;
     SphereCapState y_prev = y, y_hit = y;
@@ -199,26 +243,6 @@ class SphereTippedContact {
       for (int k = 1; k < (s_.face > 0.0 ? kFacePoints : 0); ++k)  // the face, uniform
         samples->push_back({r_start * k / kFacePoints, l, 0.0});
     }
-    const bool ok = integrate_part(cap, y, r_start, 1.0, integration, [&](double r, const auto& x) {
-      if (r > r_start && crossed(r, x)) {
-        r_hit = r;
-        y_hit = x;
-        return false;
-      }
-      r_prev = r;
-      y_prev = x;
-      if (samples) samples->push_back({r, x[1], x[0]});
-      if (i1_max) {
-        const double l2 = arc_radius_at(x[0]) / r;
-        i1_max->observe(r, x, first_invariant(x[1], l2));
-        if (wrinkle_r < 0.0 && hoop_compressive(x[1], l2)) {
-          wrinkle_r = r;
-          wrinkle_radius = l2 * r;
-        }
-      }
-      return true;
-    });
-    if (!ok || r_hit < 0.0) return std::nullopt;
     // Inside the last step: the contact edge if the force is carried before the equator, else
     // the equator.  Trials re-take one step from the last accepted state; one that leaves the
     // material's domain counts as past the event.
@@ -280,7 +304,7 @@ class SphereTippedContact {
       return r_root;
     };
     const auto equator = [&](double, const SphereCapState& x) {
-      return Event{x[0] - kHalfPiCap, x[1] / arc()};
+      return Event{x[0] - end_psi_, x[1] / arc()};
     };
     // V = R s1 sin(theta) + P (a sin(theta))^2 / 2 - f, with dV/dR = cos(theta) (s2 sin(theta)
     // + R s1 lambda1 / a + P a sin(theta) lambda1) and, with friction, + mu sin(theta)^2 (s1
@@ -288,7 +312,12 @@ class SphereTippedContact {
     // dV/dR = cos(theta) (s2 sin(theta) + R s1 lambda1 / rho + P r lambda1) + mu sin(theta)
     // p r lambda1.
     const auto edge = [&](double r, const SphereCapState& x) {
-      const double l2 = arc_radius_at(x[0]) / r;
+      if (cone() && x[0] > tangency_) {  // on the cone: V = R s1 sin(slope)
+        const auto st = membrane_stress(law_, x[1], radius_at(x[0]) / r);
+        const double c = std::cos(tangency_), sn = std::sin(tangency_);
+        return Event{r * st.s1 * sn - f, sn * (c + s_.mu * sn) * st.s2};
+      }
+      const double l2 = radius_at(x[0]) / r;
       const auto st = membrane_stress(law_, x[1], l2);
       const double c = std::cos(x[0]), sn = std::sin(x[0]);
       if (s_.face > 0.0) {
@@ -304,12 +333,60 @@ class SphereTippedContact {
       return Event{r * st.s1 * sn + gas_load(x[0]) - f,
                    c * (st.s2 * sn + r * st.s1 * x[1] / s_.a + gas * sn) + friction};
     };
+    // The cone's march stops first where the tip sphere meets the cone and restarts there, so
+    // that no step (nor a trial step locating an event) spans the jump of the meridian's
+    // curvature, which would cost the steps their order.
+    bool to_tangency = cone() && tangency_ < end_psi_;
+    double r_from = r_start;
+    const auto run = [&]() {
+      r_hit = -1.0;
+      return integrate_part(cap, y, r_from, 1.0, integration, [&](double r, const auto& x) {
+        if (r > r_from && (crossed(r, x) || (to_tangency && x[0] >= tangency_))) {
+          r_hit = r;
+          y_hit = x;
+          return false;
+        }
+        r_prev = r;
+        y_prev = x;
+        if (samples) samples->push_back({r, x[1], x[0]});
+        if (i1_max) {
+          const double l2 = radius_at(x[0]) / r;
+          i1_max->observe(r, x, first_invariant(x[1], l2));
+          if (wrinkle_r < 0.0 && hoop_compressive(x[1], l2)) {
+            wrinkle_r = r;
+            wrinkle_radius = l2 * r;
+          }
+        }
+        return true;
+      });
+    };
+    if (!run() || r_hit < 0.0) return std::nullopt;
+    if (to_tangency && y_hit[0] >= tangency_) {
+      // At the junction: the edge lies on the sphere if the force is carried there already,
+      // else the march goes on along the cone from the junction.
+      const auto junction = [&](double, const SphereCapState& x) {
+        return Event{x[0] - tangency_, x[1] / s_.a};
+      };
+      SphereCapState y_junction;
+      const auto r_junction = locate(junction, r_hit, y_hit, y_junction);
+      if (!r_junction) return std::nullopt;
+      if (carried(*r_junction, y_junction) >= f) {
+        r_hit = *r_junction;
+        y_hit = y_junction;
+      } else {
+        to_tangency = false;
+        cap.part = SphereCapSystem<Law>::Part::Cone;
+        r_from = *r_junction;
+        y = y_junction;
+        if (!run() || r_hit < 0.0) return std::nullopt;
+      }
+    }
     // The search ends at the equator if the step passes it (R s1 sin(theta) peaks there: dV/dR
     // carries a factor cos(theta)); the force is carried before the equator if V reaches f by
     // the search's end.
     double r_stop = r_hit;
     SphereCapState y_stop = y_hit;
-    if (y_hit[0] >= kHalfPiCap) {
+    if (y_hit[0] >= end_psi_) {
       const auto r_equator = locate(equator, r_hit, y_hit, y_stop);
       if (!r_equator) return std::nullopt;
       r_stop = *r_equator;
@@ -329,12 +406,15 @@ class SphereTippedContact {
     end.state = *y_end;
     end.vertical = vertical(end.r, end.state);
     end.carried = carried(end.r, end.state);
+    end.pull = cone()
+                   ? end.r * membrane_stress(law_, end.state[1], radius_at(end.state[0]) / end.r).s1
+                   : end.vertical;
     end.wrinkle_r = wrinkle_r;
     end.wrinkle_radius = wrinkle_radius;
     if (samples) samples->push_back({end.r, end.state[1], end.state[0]});
     if (i1_max)
       i1_max->observe(
-          end.r, end.state, first_invariant(end.state[1], arc_radius_at(end.state[0]) / end.r));
+          end.r, end.state, first_invariant(end.state[1], radius_at(end.state[0]) / end.r));
     return end;
   }
 
@@ -351,6 +431,7 @@ class SphereTippedContact {
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
     const auto end = march(p, f);
     if (!end) return std::nullopt;
+    if (end->at_equator && cone()) return kink_start(*end, f);
     if (end->at_equator) {
       // Carried only at the equator: a vertical exit when the force is met there to round-off
       // (the lower end of the shooting bracket), else the contact would wrap the side.
@@ -373,7 +454,9 @@ class SphereTippedContact {
     // Recorded, the cap is marched in shorter steps: its edge moves by the integration's error,
     // and an edge just short of the equator may be met at it (carrying f there to that error).
     const bool edge_at_equator = end && end->at_equator && end->carried >= sol.f * (1.0 - 1e-7);
-    if (!end || (end->at_equator && st.slope != kHalfPiCap && !edge_at_equator)) {
+    const bool kink_exit =
+        cone() && end && end->at_equator && capacity(*end) >= sol.f * (1.0 - 1e-7);
+    if (!end || (end->at_equator && st.slope != kHalfPiCap && !edge_at_equator && !kink_exit)) {
       sol.status = Status::NoConvergence;
       sol.message = "the contact edge on the sphere could not be located again";
       return false;
@@ -385,8 +468,18 @@ class SphereTippedContact {
     }
     sol.r_corner = st.r0;
     sol.part_three_stretch = p;  // the pole's equibiaxial stretch (max_first_invariant_of)
-    sol.depth += cap_height(st.slope);
-    sol.tension_ratio = 1.0;
+    if (cone()) {
+      sol.tension_ratio = st.ratio;  // the capstan factor over the kink (1 elsewhere)
+      // The membrane on the cone, from the tangency to Part I's start (reported as Part II's
+      // length): from Part I's current inner radius.
+      const double on_cone =
+          (st.state[2] * st.r0 - s_.a * std::sin(tangency_)) / std::cos(tangency_);
+      sol.part_two_length = std::clamp(on_cone, 0.0, s_.a * (end_psi_ - tangency_));
+      sol.depth += free_part_inner_height_on_cone(st.slope, sol.part_two_length);
+    } else {
+      sol.depth += cap_height(st.slope);
+      sol.tension_ratio = 1.0;
+    }
     return true;
   }
 
@@ -407,8 +500,10 @@ class SphereTippedContact {
     if (!onset && pressure_ > 0.0 && f <= gas_load(kHalfPiCap)) return hemisphere_plan(f, counted);
     if (!onset) {
       plan.status = Status::BeyondLocking;
-      plan.message =
-          "no pole stretch lets the sphere-tipped probe carry this force before the material locks";
+      plan.message = cone() ? "no pole stretch lets the cone probe's tip and cone carry this force "
+                              "before the material locks"
+                            : "no pole stretch lets the sphere-tipped probe carry this force "
+                              "before the material locks";
       return plan;
     }
     const auto indicator = side_indicator(f, *onset);
@@ -417,6 +512,17 @@ class SphereTippedContact {
     // that is no sign of a side contact, and the cap ends on the hemisphere.
     if (!indicator && pressure_ > 0.0) return hemisphere_plan(f, counted);
     const double g_onset = indicator.value_or(kBeyondDomain);
+    // Where the model ends (the ball's equator, the cone's shank), Part I leaving nearly
+    // vertically makes the residual grow as the square root of the pole stretch's distance from
+    // the onset's (t = sqrt(N^2 - f^2) at the kink; V stationary at the equator), and a root within
+    // 1e-5 of the residual there (forces within ~2e-6 of the onset) is not resolved in doubles
+    // (docs/model.md, §15.1): counted as past the onset.
+    if (s_.beyond != BeyondTipSphere::CylinderSide && g_onset >= -kEndResidualMargin) {
+      plan.configuration = Configuration::SlipWithPartTwo;
+      plan.status = Status::OutsideModel;
+      plan.message = s_.beyond == BeyondTipSphere::Neck ? kNeckNotSolved : kShankNotSolved;
+      return plan;
+    }
     if (g_onset >= 0.0 && rough_side_solved()) return rough_side_plan(*onset, g_onset, counted);
     if (g_onset >= 0.0 && s_.mu != 0.0) {
       plan.configuration = Configuration::SlipWithPartTwo;
@@ -531,6 +637,7 @@ class SphereTippedContact {
   // before the material locks.
   template <class Shooting>
   std::optional<ScaledSolution> slip_change(const Shooting& shooting) const {
+    if (s_.beyond != BeyondTipSphere::CylinderSide) return std::nullopt;  // a status past it
     auto indicator = [&](double f) -> std::optional<double> {
       const auto onset = equator_onset(f);
       if (!onset) return std::nullopt;
@@ -575,6 +682,7 @@ class SphereTippedContact {
   }
 
   std::string crack_location(const ScaledSolution& sol) const {
+    if (cone()) return crack_location_on_cone(sol);
     const bool fillet = s_.face > 0.0;
     if (pole_is_largest(sol))
       return fillet ? "Part III, on the flat face (uniform, as stretched as the pole)"
@@ -596,6 +704,7 @@ class SphereTippedContact {
   double free_part_inner_height(const ScaledSolution& sol) const {
     if (sol.configuration == Configuration::Unloaded) return 0.0;
     if (sol.configuration == Configuration::SlipWithPartTwo) return arc() + sol.part_two_length;
+    if (cone()) return free_part_inner_height_on_cone(sol.corner_slope, sol.part_two_length);
     return cap_height(sol.corner_slope);
   }
 
@@ -607,20 +716,24 @@ class SphereTippedContact {
     const double depth = sol.depth * big_a;
     for (const auto& sample : sol.part_two) {
       const double r_ref = sample[0], l1 = sample[1], psi = sample[2];
-      const bool side = psi > kHalfPiCap;
+      const bool side = !cone() && psi > kHalfPiCap;
       const bool face = s_.face > 0.0 && psi == 0.0 && r_ref < s_.face / l1;
-      const double radius = side ? s_.a : face ? l1 * r_ref : arc_radius_at(psi);
+      const double radius = side ? s_.a : face ? l1 * r_ref : radius_at(psi);
       const double l2 = r_ref > 0.0 && !face ? radius / r_ref : l1;
       const auto st = membrane_stress(law_, l1, l2);
-      const double pressure =
-          face ? pressure_ * g * u.thickness_mm / big_a
-               : contact_pressure(l1, l2, st, side, psi) * g * u.thickness_mm / big_a;
+      // The flat face carries only the gas pressure; on the cone the meridian is straight: the
+      // hoop tension alone presses it on.
+      const double normal = face ? pressure_
+                            : cone() && psi > tangency_
+                                ? st.s2 * std::sin(tangency_) / (l1 * radius)
+                                : contact_pressure(l1, l2, st, side, psi);
+      const double pressure = normal * g * u.thickness_mm / big_a;
       append_point(m,
                    side ? MembranePart::Side : MembranePart::Tip,
                    r_ref * big_a,
                    radius * big_a,
                    depth - profile_height(psi) * big_a,
-                   std::min(psi, kHalfPiCap),
+                   cone() ? slope_at(psi) : std::min(psi, kHalfPiCap),
                    l1,
                    l2,
                    st,
@@ -653,9 +766,6 @@ class SphereTippedContact {
   // angle theta, b + rho sin(theta) (b = 0 for the hemisphere: a sin(theta) to the last bit).
   double arc() const { return s_.a - s_.face; }
   double arc_radius_at(double theta) const { return s_.face + arc() * std::sin(theta); }
-  SphereCapSystem<Law> cap_system() const {
-    return {law_, arc(), locking_i1_, s_.mu, pressure_, s_.face};
-  }
   // The arc's start at the flat face's edge, R = b / l: the face's uniform stretch l, its stored
   // energy W(l, l) R^2 / 2.
   SphereCapState face_edge_state(double l, double r_edge) const {
@@ -667,7 +777,23 @@ class SphereTippedContact {
   double cap_height(double theta) const { return arc() * (1.0 - std::cos(theta)); }
   // ... and of the profile point psi (sample coordinate): past pi/2, up the cylinder.
   double profile_height(double psi) const {
+    if (cone() && psi > tangency_)
+      return cap_height(tangency_) + s_.a * (psi - tangency_) * std::sin(tangency_);
     return psi <= kHalfPiCap ? cap_height(psi) : arc() * (1.0 + (psi - kHalfPiCap));
+  }
+  // The profile point psi's current radius and the meridian's slope there: on the sphere (the
+  // fillet) arc_radius_at(psi) and psi, on the cone (psi past the tangency) the straight
+  // generatrix.
+  double radius_at(double psi) const {
+    if (cone() && psi > tangency_)
+      return s_.a * (std::sin(tangency_) + (psi - tangency_) * std::cos(tangency_));
+    return arc_radius_at(psi);
+  }
+  double slope_at(double psi) const { return cone() && psi > tangency_ ? tangency_ : psi; }
+  // Part I's inner end above the pole on the cone probe: at the slope (on the tip sphere), or
+  // the tangency's height plus the membrane's length on the cone times its slope's sine.
+  double free_part_inner_height_on_cone(double slope, double on_cone) const {
+    return cap_height(std::min(slope, tangency_)) + on_cone * std::sin(tangency_);
   }
 
   // The cap that carries f exactly at the equator: its pole stretch and its end.
@@ -682,7 +808,7 @@ class SphereTippedContact {
     auto g = [&](double l) -> std::optional<double> {
       const auto end = march(l, std::numeric_limits<double>::infinity());
       if (!end) return std::nullopt;
-      return end->carried - f;
+      return capacity(*end) - f;
     };
     // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
     // law without locking whose V at the equator stays below f at every stretch): far from f
@@ -691,7 +817,7 @@ class SphereTippedContact {
     // compression towards the equator).
     auto found = [&](double l) -> std::optional<EquatorOnset> {
       const auto end = march(l, std::numeric_limits<double>::infinity());
-      if (!end || !(std::abs(end->carried - f) <= 1e-3 * f + 1e-9)) return std::nullopt;
+      if (!end || !(std::abs(capacity(*end) - f) <= 1e-3 * f + 1e-9)) return std::nullopt;
       last_onset_ = {f, l};
       return EquatorOnset{l, *end};
     };
@@ -763,7 +889,7 @@ class SphereTippedContact {
   // Clamp residual of Part I leaving the equator vertically at force f (Part II of zero length):
   // the same whether counted as the cap's end or the side's top.  Empty past locking.
   std::optional<double> side_indicator(double f, const EquatorOnset& onset) const {
-    return part_one_.residual(f, side_top_start(f, s_.a / onset.end.r));
+    return part_one_.residual(f, side_top_start(f, side_radius_ / onset.end.r));
   }
 
   const SphereTippedSettings& settings() const { return s_; }
@@ -777,6 +903,13 @@ class SphereTippedContact {
   static constexpr const char* kStickNotImplemented =
       "the stick stage on the sphere-tipped probe is not implemented yet: only sliding (stick "
       "rule none) is solved";
+  static constexpr const char* kNeckNotSolved =
+      "outside the ball model: the contact passes the ball's equator; the membrane would wrap the "
+      "upper hemisphere and form a neck above the ball, which is not solved (docs/model.md, "
+      "section 15.1)";
+  static constexpr const char* kShankNotSolved =
+      "outside the cone model: the contact reaches the shank (the membrane would wrap the "
+      "cylinder above the cone-shank kink, which is not solved; docs/model.md, section 15.2)";
 
  private:
   // Where the cap starts: the polar angle there (the series' error, O((L R / a)^4) = 1e-16,
@@ -786,6 +919,90 @@ class SphereTippedContact {
   static constexpr double kHalfPiCap = boost::math::constants::half_pi<double>();
   static constexpr double kEdgeTol = 1e-9;
   static constexpr int kFacePoints = 4;  // samples of the uniform flat face, pole included
+  static constexpr double kEndResidualMargin = 1e-5;
+
+  bool cone() const { return s_.beyond == BeyondTipSphere::Cone; }
+
+  // The cap's system, with the cone past the tangency for the cone probe (by position, or the
+  // sphere's or the cone's equations throughout).
+  SphereCapSystem<Law> cap_system(
+      typename SphereCapSystem<Law>::Part part = SphereCapSystem<Law>::Part::ByPosition) const {
+    SphereCapSystem<Law> cap{law_, arc(), locking_i1_, s_.mu, pressure_, s_.face};
+    if (cone()) {
+      cap.tangency = tangency_;
+      cap.part = part;
+    }
+    return cap;
+  }
+
+  // What the cap can carry at the end of the curved profile: at the sphere's equator its vertical
+  // pull; at the cone's kink R s1 times the capstan factor over the kink's whole angle, the pull
+  // of a vertical exit.
+  double capacity(const CapEnd& end) const {
+    if (!cone()) return end.carried;
+    return s_.mu == 0.0 ? end.pull : end.pull * std::exp(s_.mu * (kHalfPiCap - tangency_));
+  }
+
+  // Part I leaving the cone-shank kink (the cap carried less than f up to it): the membrane
+  // turns over the kink with a line force, lambda2 continuous, R s1 = N continuous without
+  // friction and raised by the capstan factor exp(mu (slope - cone's slope)) with it (the
+  // membrane slides outward over the kink, §5), at the slope where N exp(...) sin(slope) = f,
+  // between the cone's and vertical; none when even a vertical exit carries less than f (the
+  // membrane would wrap the shank).
+  std::optional<FreeStart> kink_start(const CapEnd& end, double f) const {
+    if (!(capacity(end) >= f * (1.0 - 1e-9))) return std::nullopt;
+    double slope = std::asin(std::min(1.0, f / end.pull)), ratio = 1.0;
+    if (s_.mu != 0.0) {
+      // sin(slope) exp(mu (slope - tangency)) = f / N grows with the slope on [tangency, pi/2].
+      const double kappa = f / end.pull;
+      auto g = [&](double x) { return std::sin(x) * std::exp(s_.mu * (x - tangency_)) - kappa; };
+      const double g_lo = g(tangency_), g_hi = g(kHalfPiCap);
+      if (g_lo >= 0.0) {
+        slope = tangency_;
+      } else if (g_hi <= 0.0) {
+        slope = kHalfPiCap;
+      } else {
+        std::uintmax_t iterations = 100;
+        const auto bracket =
+            boost::math::tools::toms748_solve(g,
+                                              tangency_,
+                                              kHalfPiCap,
+                                              g_lo,
+                                              g_hi,
+                                              boost::math::tools::eps_tolerance<double>(50),
+                                              iterations);
+        slope = 0.5 * (bracket.first + bracket.second);
+      }
+      ratio = std::exp(s_.mu * (slope - tangency_));
+    }
+    // R s1 cos(slope) past the kink; without friction sqrt(N^2 - f^2), exact near vertical.
+    const double t = s_.mu == 0.0 ? std::sqrt(std::max(0.0, (end.pull - f) * (end.pull + f)))
+                                  : end.pull * ratio * std::cos(slope);
+    const double l1_in = end.state[1], l2 = radius_at(end.state[0]) / end.r;
+    double l1 = l1_in;
+    if (ratio != 1.0) {  // s1 raised by the capstan factor at the same hoop stretch
+      const auto raised = invert_radial_stress(law_, ratio * end.pull / end.r, l2);
+      if (!raised) return std::nullopt;
+      l1 = *raised;
+    }
+    return FreeStart{{t, l1, l2, 0.0}, end.r, slope, ratio};
+  }
+
+  std::string crack_location_on_cone(const ScaledSolution& sol) const {
+    if (pole_is_largest(sol)) return "the pole, under the tip sphere";
+    if (std::abs(sol.max_i1_r - sol.r_top) <= kEdgeTol * sol.r_top) {
+      if (sol.corner_slope > tangency_)
+        return "the kink where the cone meets the shank, where the membrane leaves the probe";
+      return sol.corner_slope < tangency_
+                 ? "the contact edge, where the membrane leaves the tip sphere"
+                 : "the contact edge, where the membrane leaves the cone";
+    }
+    if (sol.max_i1_r < sol.r_corner)
+      return sol.max_i1_radius <= s_.a * std::sin(tangency_)
+                 ? "on the tip sphere, between the pole and the cone"
+                 : "on the cone, between the tip sphere and the contact edge";
+    return "Part I, off the indenter";
+  }
 
   bool pole_is_largest(const ScaledSolution& sol) const {
     const double l = sol.part_three_stretch;
@@ -795,18 +1012,18 @@ class SphereTippedContact {
   // Part I leaving the side vertically at R = a / p: R s1 = f - P a^2 / 2 (the gas pressure on
   // the probe's cross-section takes its share), t = 0.
   std::optional<FreeStart> side_top_start(double f, double p) const {
-    if (!(p > s_.a)) return std::nullopt;  // the top must lie inside the clamp
+    if (!(p > side_radius_)) return std::nullopt;  // the top must lie inside the clamp
     const double pull = pressure_ == 0.0 ? f : f - gas_load(kHalfPiCap);
     if (!(pull > 0.0)) return std::nullopt;
-    const auto l1 = invert_radial_stress(law_, pull * p / s_.a, p);
+    const auto l1 = invert_radial_stress(law_, pull * p / side_radius_, p);
     if (!l1) return std::nullopt;
-    return FreeStart{{0.0, *l1, p, 0.0}, s_.a / p, kHalfPiCap, 1.0};
+    return FreeStart{{0.0, *l1, p, 0.0}, side_radius_ / p, kHalfPiCap, 1.0};
   }
 
   // Part I leaving the sphere tangentially at the contact edge: slope theta, t = R s1 cos(theta).
   FreeStart edge_start(const CapEnd& end) const {
-    const double theta = end.state[0], l1 = end.state[1];
-    const double l2 = arc_radius_at(theta) / end.r;
+    const double theta = slope_at(end.state[0]), l1 = end.state[1];
+    const double l2 = radius_at(end.state[0]) / end.r;
     const double t = end.vertical / std::tan(theta);  // R s1 cos(theta), R s1 sin(theta) = f
     return FreeStart{{t, l1, l2, 0.0}, end.r, theta, 1.0};
   }
@@ -819,15 +1036,15 @@ class SphereTippedContact {
   // The cap's largest I1 (refined between samples) into the solution's, if it is larger.
   void track_cap_maximum(const InteriorMaximum<SphereCapState>& i1_max, double,
                          ScaledSolution& sol) const {
-    const SphereCapSystem<Law> cap = cap_system();
+    const auto cap = cap_system();
     auto cap_i1 = [&](double r, const SphereCapState& y) {
-      return first_invariant(y[1], arc_radius_at(y[0]) / r);
+      return first_invariant(y[1], radius_at(y[0]) / r);
     };
     const auto found = refined_maximum(i1_max, cap, cap_i1);
     if (found.value > sol.max_i1) {
       sol.max_i1 = found.value;
       sol.max_i1_r = found.r;
-      sol.max_i1_radius = arc_radius_at(found.state[0]);
+      sol.max_i1_radius = radius_at(found.state[0]);
     }
   }
 
@@ -1062,7 +1279,10 @@ class SphereTippedContact {
   const Law& law_;
   SphereTippedSettings s_;
   double locking_i1_;
-  double pressure_;  // gas pressure P under the membrane (0: none)
+  double pressure_;     // gas pressure P under the membrane (0: none)
+  double tangency_;     // polar angle where the tip sphere ends: pi/2, or the cone's tangency
+  double side_radius_;  // radius where the curved profile ends: the cylinder's a, the shank's
+  double end_psi_;      // the profile coordinate there (pi/2: the equator; the cone's kink)
   // The last equator onset found (force, pole stretch): a warm start for the next (one solve
   // runs single-threaded on its own contact model).
   mutable std::pair<double, double> last_onset_{-1.0, 0.0};
