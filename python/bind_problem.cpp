@@ -185,6 +185,20 @@ void copyable(py::class_<T>& c) {
       "__deepcopy__", [](const T& x, py::dict) { return T(x); }, py::arg("memo"));
 }
 
+// A probe shape's outline(): its meridian as (r [mm], height above the tip [mm]) pairs.
+template <class Shape>
+void def_outline(py::class_<Shape>& c) {
+  c.def(
+      "outline",
+      [](const Shape& shape) {
+        std::vector<std::pair<double, double>> points;
+        for (const auto& p : outline(Indenter{shape})) points.emplace_back(p.r_mm, p.height_mm);
+        return points;
+      },
+      "The meridian from the tip (r = 0) to where the vertical shank begins: a list of\n"
+      "(r [mm], height above the tip [mm]), curved parts in 24 chords each (to draw it to scale)");
+}
+
 }  // namespace
 
 std::string invalid_input_message(const std::vector<ValidationError>& errors) {
@@ -275,6 +289,7 @@ void bind_problem(py::module_& m) {
                     "corner fillet radius rho [mm] (0: the sharp corner)")
       .def("__repr__", [](const FlatPunch& p) { return indenter_repr(p); });
   copyable(flat_punch);
+  def_outline(flat_punch);
   py::class_<SphereTipped> sphere_tipped(
       m,
       "SphereTipped",
@@ -286,6 +301,7 @@ void bind_problem(py::module_& m) {
       .def_readonly("radius_mm", &SphereTipped::radius_mm, "hemisphere and cylinder radius a [mm]")
       .def("__repr__", [](const SphereTipped& p) { return indenter_repr(p); });
   copyable(sphere_tipped);
+  def_outline(sphere_tipped);
   py::class_<Ball> ball(m,
                         "Ball",
                         "A sphere of radius ball_radius_mm on a rod of radius radius_mm (sliding "
@@ -299,6 +315,7 @@ void bind_problem(py::module_& m) {
       .def_readonly("ball_radius_mm", &Ball::ball_radius_mm, "ball radius RB [mm] (> a)")
       .def("__repr__", [](const Ball& p) { return indenter_repr(p); });
   copyable(ball);
+  def_outline(ball);
   py::class_<Cone> cone(m,
                         "Cone",
                         "A cone of half-angle half_angle_deg with a spherical tip of radius\n"
@@ -315,6 +332,7 @@ void bind_problem(py::module_& m) {
       .def_readonly("tip_radius_mm", &Cone::tip_radius_mm, "tip sphere radius RT [mm] (> 0)")
       .def("__repr__", [](const Cone& p) { return indenter_repr(p); });
   copyable(cone);
+  def_outline(cone);
 
   py::class_<Gent> gent(m, "Gent", "Gent law W/G = -(J_lim/2) ln(1 - (I1 - 3)/J_lim)");
   gent.def(py::init([](double j_lim) { return Gent{j_lim}; }), py::arg("j_lim") = Gent{}.j_lim)

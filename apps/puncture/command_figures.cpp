@@ -6,6 +6,8 @@
 //   Fig. 13(a-e) loading curves to puncture: a = 1-4 mm lubricated (mu' = 0.18), 1 mm dry (1.95)
 //   Fig. 14      the balloons: a = 1 mm on the membrane inflated by a gas pressure held
 //                constant (--pressure, else 3e-4 MPa: the paper gives none), lubricated vs dry
+//   probes       flat (sharp and rounded), sphere-tipped and cone probes of one radius, without
+//                friction (figure_probes.hpp); not in the paper
 // Figs. 12 and 13 are computed with the ring-balance Part II equation and with the paper's
 // printed Eq. 18.
 #include <fmt/format.h>
@@ -19,6 +21,7 @@
 #include <system_error>
 
 #include "cli_error.hpp"
+#include "figure_probes.hpp"
 #include "figures.hpp"
 #include "plot.hpp"
 #include "progress.hpp"
@@ -275,6 +278,8 @@ std::string figures_json(const Problem& base, const CurveFlags& curve) {
   out["fig13"] = fig13(base, curve.points);
   progress.note("Fig. 14");
   out["fig14"] = fig14(base, curve.points);
+  progress.note("probes");
+  out["probes"] = probes_figure(base, curve.points);
   return out.dump(1) + "\n";
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// `puncture figures --out DIR`: the paper's analytical figures (Liu et al. 2018, Figs. 11-13)
-// and its inflated balloons (Fig. 14) for the membrane given by the flags: the data are computed
-// here, drawn by the plotting script.
+// `puncture figures --out DIR`: the paper's analytical figures (Liu et al. 2018, Figs. 11-13),
+// its inflated balloons (Fig. 14) and a comparison of probes, for the membrane given by the
+// flags: the data are computed here, drawn by the plotting script.
 #include <CLI/CLI.hpp>
 #include <string>
 
@@ -15,7 +15,7 @@ struct FiguresFlags {
 };
 void add_figures_options(CLI::App& figures, FiguresFlags& flags);
 
-// Every figure's data as JSON: "inputs", "fig11", "fig12a", "fig12b", "fig13", "fig14".  The
+// Every figure's data as JSON: "inputs", "fig11", "fig12a", "fig12b", "fig13", "fig14", "probes".  The
 // base problem's indenter radius and friction are replaced by each figure's own; Fig. 14 uses
 // the base's pressure (3e-4 MPa without one, "pressure_assumed").
 std::string figures_json(const Problem& base, const CurveFlags& curve);

@@ -111,6 +111,15 @@ json problem_json(const Problem& p, std::string_view calibrated) {
     out["cone_half_angle_deg"] = finite(cone->half_angle_deg, "cone half-angle");
     out["tip_radius_mm"] = finite(cone->tip_radius_mm, "tip radius");
   }
+  // A curved probe's meridian, for the plots to draw it to scale (the sharp punch is a rectangle).
+  if (!sharp_flat_punch(p.indenter)) {
+    json r = json::array(), height = json::array();
+    for (const auto& point : outline(p.indenter)) {
+      r.push_back(finite(point.r_mm, "outline radius"));
+      height.push_back(finite(point.height_mm, "outline height"));
+    }
+    out["indenter_outline"] = {{"r_mm", r}, {"height_mm", height}};
+  }
   return out;
 }
 

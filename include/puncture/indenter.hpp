@@ -4,6 +4,7 @@
 // (docs/architecture.md).
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace puncture {
 
@@ -55,5 +56,14 @@ std::string describe(const Indenter& indenter);
 // Whether it is the flat punch with a sharp corner (fillet radius 0), the probe of the finite
 // elements, verify(), the friction calibration and the energy-release criterion.
 bool sharp_flat_punch(const Indenter& indenter);
+
+// A point of a probe's meridian: its distance from the axis and its height above the tip [mm].
+struct OutlinePoint {
+  double r_mm;
+  double height_mm;
+};
+// The probe's meridian from its tip (r = 0, height 0) to where its vertical shank (side, rod)
+// begins at r = radius_mm(indenter), curved parts in 24 chords each: for drawing it to scale.
+std::vector<OutlinePoint> outline(const Indenter& indenter);
 
 }  // namespace puncture

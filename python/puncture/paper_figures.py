@@ -11,6 +11,8 @@ DIR/figures-data.json and calls draw_all(data, DIR), which writes each figure as
     fig13     the five panels on one page
     fig14     the balloons: a 1 mm flat punch on the inflated membrane (gas pressure held),
               lubricated (mu' = 0.18) vs dry (1.95), loading curves and puncture points
+    probes    not in the paper: flat (sharp and rounded), sphere-tipped and cone probes of one
+              radius without friction, their outlines to scale, loading curves and punctures
 
 Figs. 12 and 13 show the ring-balance Part II equation (solid, the default) and the paper's
 printed Eq. 18 (dashed) where they differ.  The paper's experimental data are not reproduced.
@@ -28,7 +30,7 @@ try:
 except ImportError:  # run from plot_cli.py as a script
     import plots
 
-__all__ = ["draw_all", "fig11", "fig12a", "fig12b", "fig13_panel", "fig13", "fig14"]
+__all__ = ["draw_all", "fig11", "fig12a", "fig12b", "fig13_panel", "fig13", "fig14", "probes"]
 
 EQUATION_NAMES = {
     "ring-balance": "ring balance (default)",
@@ -315,6 +317,47 @@ def fig14(data):
     return fig
 
 
+def probes(data):
+    """Probes of one radius on the same membrane: outlines to scale, loading curves, punctures."""
+    d = data["probes"]
+    with matplotlib.rc_context(plots.STYLE):
+        fig = Figure(figsize=(12.0, 5.2), layout="constrained")
+        shapes, curves = fig.subplots(1, 2, width_ratios=[1, 2.4])
+        stopped = []
+        for colour, probe in zip(SERIES_COLOURS, d["probes"]):
+            r, z = _values(probe["outline"]["r_mm"]), _values(probe["outline"]["z_mm"])
+            shapes.plot(np.concatenate([-r[::-1], r]), np.concatenate([z[::-1], z]),
+                        color=colour, lw=1.6)
+            depth, force = _values(probe["depth_mm"]), _values(probe["force_n"])
+            p = probe.get("puncture")
+            label = probe["description"]
+            if p:
+                energy = f", {p['energy_mj']:.3g} mJ" if p.get("energy_mj") is not None else ""
+                label += (f"\npuncture {p['force_n']:.3g} N at {p['depth_mm']:.3g} mm{energy}"
+                          f" ({p['crack_location']})")
+            elif "failure" in probe:
+                label += "\nno puncture: the model ends first (below)"
+                stopped.append(f"{probe['key']}: {probe['failure']['message']}")
+            curves.plot(depth, force, color=colour, lw=1.6, label=label)
+            if p:
+                curves.plot([p["depth_mm"]], [p["force_n"]], "X", color=plots.CRITICAL_COLOUR,
+                            ms=9, mec="white", mew=0.7, zorder=5)
+        shapes.set_aspect("equal")
+        shapes.set_xlabel("r [mm]")
+        shapes.set_ylabel("height above the tip [mm]")
+        shapes.set_title("the probes, to scale")
+        curves.set_xlim(left=0)
+        curves.set_ylim(bottom=0)
+        curves.set_xlabel("indentation depth δ [mm]")
+        curves.set_ylabel("indenter force F [N]")
+        curves.legend(loc="upper left", fontsize=8, framealpha=0.9)
+        curves.set_title("loading curves without friction; X: predicted puncture"
+                         + ("\n" + "\n".join(stopped) if stopped else ""), fontsize=8)
+        fig.suptitle(f"Probes of radius {d['indenter_radius_mm']:g} mm; {_membrane(data)}",
+                     fontsize=10)
+    return fig
+
+
 def draw_all(data, out_dir, formats=(".png", ".svg")):
     """Writes every figure into out_dir in each format; returns the paths written."""
     os.makedirs(out_dir, exist_ok=True)
@@ -324,6 +367,8 @@ def draw_all(data, out_dir, formats=(".png", ".svg")):
     figures.append(("fig13", fig13(data)))
     if "fig14" in data:
         figures.append(("fig14", fig14(data)))
+    if "probes" in data:
+        figures.append(("probes", probes(data)))
     written = []
     for name, fig in figures:
         for suffix in formats:

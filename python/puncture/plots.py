@@ -22,7 +22,7 @@ import matplotlib
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
-from matplotlib.patches import Patch, Rectangle
+from matplotlib.patches import Patch, Polygon, Rectangle
 
 __all__ = ["loading_curve", "profile", "stretch_fields", "state_overview", "inflation_curve",
            "save", "STYLE"]
@@ -85,6 +85,7 @@ def _info_from_problem(problem):
     return {
         "clamp_radius_mm": g.clamp_radius_mm,
         "indenter_radius_mm": problem.indenter.radius_mm,
+        "indenter_outline": _curved_outline(problem.indenter),
         "thickness_mm": g.thickness_mm,
         "friction": problem.friction,
         "critical_i1": problem.critical_i1,
@@ -93,6 +94,14 @@ def _info_from_problem(problem):
         "part_two_equation": _token(problem.part_two_equation),
         "stick": _stick_text(_token(problem.stick.rule), problem.stick.threshold),
     }
+
+
+def _curved_outline(indenter):
+    """A curved probe's meridian (r, height above the tip); None for the sharp flat punch, which
+    is drawn as a rectangle."""
+    if type(indenter).__name__ == "FlatPunch" and indenter.fillet_radius_mm == 0:
+        return None
+    return indenter.outline()
 
 
 def _stick_text(rule, threshold):
@@ -109,6 +118,9 @@ def _info_from_json(inputs):
     return {
         "clamp_radius_mm": inputs["clamp_radius_mm"],
         "indenter_radius_mm": inputs["indenter_radius_mm"],
+        "indenter_outline": (list(zip(inputs["indenter_outline"]["r_mm"],
+                                      inputs["indenter_outline"]["height_mm"]))
+                             if "indenter_outline" in inputs else None),
         "thickness_mm": inputs["thickness_mm"],
         "friction": inputs["friction"],
         "critical_i1": inputs["critical_i1"],
@@ -327,9 +339,18 @@ def _normalised_axis(ax, scale):
         sec.set_ylabel("normalised force F / 2πGHA")
 
 
-def _draw_indenter(ax, x0, x1, y0, y1):
-    ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, facecolor=INDENTER_COLOUR, alpha=0.35,
-                           edgecolor="#555555", lw=1.0, zorder=1))
+def _draw_indenter(ax, x0, x1, y0, y1, outline=None):
+    """The probe from its tip at height y0 up to y1: a rectangle from x0 to x1 (the sharp flat
+    punch), or its meridian `outline` ((r, height above the tip) pairs) on the right half,
+    mirrored when x0 < 0, continued straight up its shank."""
+    if not outline:
+        ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, facecolor=INDENTER_COLOUR,
+                               alpha=0.35, edgecolor="#555555", lw=1.0, zorder=1))
+        return
+    right = [(r, y0 + h) for r, h in outline] + [(outline[-1][0], y1)]
+    left = [(-r, y) for r, y in reversed(right)] if x0 < 0 else [(0.0, y1)]
+    ax.add_patch(Polygon(right + left, closed=True, facecolor=INDENTER_COLOUR, alpha=0.35,
+                         edgecolor="#555555", lw=1.0, zorder=1))
 
 
 def draw_profile(ax, states):
@@ -341,7 +362,7 @@ def draw_profile(ax, states):
     deepest = max(s.depth_mm for s in states)
     top = 0.08 * max(deepest, big_a) + 2.0
     if a:
-        _draw_indenter(ax, -a, a, -deepest, top)
+        _draw_indenter(ax, -a, a, -deepest, top, info.get("indenter_outline"))
     for k, s in enumerate(states):
         style = STATE_STYLES[k % len(STATE_STYLES)]
         for part, sl in s.segments():
@@ -367,7 +388,7 @@ def draw_profile_tip(ax, states):
                         if (s.part == 2).any()]
     height = max([3.0 * a] + [1.3 * h for h in part_two_heights])
     width = max(2.5 * a, 0.9 * height)
-    _draw_indenter(ax, 0, a, 0, height * 1.05)
+    _draw_indenter(ax, 0, a, 0, height * 1.05, states[0].info.get("indenter_outline"))
     for k, s in enumerate(states):
         style = STATE_STYLES[k % len(STATE_STYLES)]
         keep = s.r <= width * 1.05

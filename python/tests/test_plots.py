@@ -6,6 +6,7 @@ import struct
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 import puncture as pu
@@ -77,6 +78,45 @@ def test_profile_of_several_loads(tmp_path, default_curve):
     # the indenter, to scale: a rectangle 2a wide
     rectangles = [p for p in whole.patches if type(p).__name__ == "Rectangle"]
     assert any(abs(r.get_width() - 4.0) < 1e-12 for r in rectangles)
+
+
+def test_profile_draws_a_curved_probe_to_scale(tmp_path):
+    a = 2.0
+    state = pu.solve_at_depth(pu.Problem(indenter=pu.SphereTipped(a), friction=0.0), 10.0)
+    fig = plots.profile([state], tmp_path / "profile.png")
+    whole = fig.axes[0]
+    polygons = [p for p in whole.patches if type(p).__name__ == "Polygon"]
+    assert len(polygons) == 1
+    xy = polygons[0].get_xy()
+    tip = xy[:, 1].min()
+    assert tip == pytest.approx(-state.depth_mm, abs=1e-12)
+    # below the equator every vertex lies on the hemisphere about (0, tip + a), on both sides
+    lower = xy[xy[:, 1] < tip + a - 1e-9]
+    assert len(lower) >= 40 and lower[:, 0].min() < 0 < lower[:, 0].max()
+    assert np.allclose(np.hypot(lower[:, 0], lower[:, 1] - (tip + a)), a, atol=1e-12)
+
+
+def test_probe_outlines():
+    # the cone: the tip sphere up to its tangency with the cone, then the generatrix at the
+    # half-angle from the axis to the shank
+    rt, alpha, shank = 0.2, 30.0, 2.0
+    points = np.array(pu.Cone(shank, alpha, rt).outline())
+    tangency = np.radians(90.0 - alpha)
+    sphere = points[:-1]
+    assert np.allclose(np.hypot(sphere[:, 0], sphere[:, 1] - rt), rt, atol=1e-15)
+    assert sphere[-1] == pytest.approx([rt * np.sin(tangency), rt * (1 - np.cos(tangency))])
+    (r0, h0), (r1, h1) = points[-2], points[-1]
+    assert r1 == shank and (r1 - r0) / (h1 - h0) == pytest.approx(np.tan(np.radians(alpha)))
+    # the rounded flat punch: the flat face, then a quarter circle of the fillet's radius
+    rho = 0.5
+    face = np.array(pu.FlatPunch(2.0, fillet_radius_mm=rho).outline())
+    assert face[0].tolist() == [0.0, 0.0] and face[-1] == pytest.approx([2.0, rho])
+    assert np.allclose(np.hypot(face[1:, 0] - (2.0 - rho), face[1:, 1] - rho), rho, atol=1e-15)
+    assert pu.FlatPunch(2.0).outline() == [(0.0, 0.0), (2.0, 0.0)]
+    # the ball over its equator to the rod
+    ball = np.array(pu.Ball(1.0, 3.0).outline())
+    assert np.allclose(np.hypot(ball[:, 0], ball[:, 1] - 3.0), 3.0, atol=1e-15)
+    assert ball[-1][0] == pytest.approx(1.0) and ball[-1][1] > 3.0  # on the upper hemisphere
 
 
 def test_stretch_fields(tmp_path):
@@ -196,7 +236,7 @@ def test_cli_figures(tmp_path, cli):
     rc, out, err = cli.run("figures", "--out", out_dir, "--points", "40")
     assert rc == 0, err
     names = ["fig11", "fig12a", "fig12b", "fig13a", "fig13b", "fig13c", "fig13d", "fig13e",
-             "fig13", "fig14"]
+             "fig13", "fig14", "probes"]
     for name in names:
         check_png(out_dir / f"{name}.png", min_width=900)
         label = {"fig11": "stretch λ", "fig12b": "friction coefficient"}.get(name, "[mm]")
@@ -222,6 +262,21 @@ def test_cli_figures(tmp_path, cli):
     assert dry["puncture"]["depth_mm"] > lubricated["puncture"]["depth_mm"]
     series = data["fig12b"]["series"]
     assert sorted({s["radius_ratio"] for s in series}) == [0.04, 0.08, 0.12]
+    # The probes: the library's puncture points (solved directly, whatever --points), the
+    # rounded corner softer than the sharp one.
+    probes = {p["key"]: p for p in data["probes"]["probes"]}
+    assert list(probes) == ["flat", "rounded", "sphere-tipped", "cone"]
+    for key, indenter in [("flat", pu.FlatPunch(2.0)),
+                          ("rounded", pu.FlatPunch(2.0, fillet_radius_mm=0.5)),
+                          ("sphere-tipped", pu.SphereTipped(2.0)),
+                          ("cone", pu.Cone(2.0, 30.0, 0.2))]:
+        expected = pu.predict_puncture(pu.Problem(indenter=indenter, friction=0.0))
+        assert probes[key]["puncture"]["force_n"] == pytest.approx(expected.force_n, rel=1e-9)
+        assert probes[key]["puncture"]["energy_mj"] > 0
+        assert max(probes[key]["depth_mm"]) == pytest.approx(expected.depth_mm, rel=1e-9)
+    assert probes["rounded"]["puncture"]["force_n"] < probes["flat"]["puncture"]["force_n"]
+    outline = probes["cone"]["outline"]
+    assert outline["r_mm"][0] == 0.0 and max(outline["r_mm"]) == pytest.approx(2.0)
     rc, _, err = cli.run("figures", "--out", out_dir, "--format", "json")
     assert rc == 1 and "--format: does not apply to 'figures'" in err
     # Drawn as a reader needs them: Fig. 13's axes fit the default (solid) curve, not the
