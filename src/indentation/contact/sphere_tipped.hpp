@@ -429,8 +429,9 @@ class SphereTippedContact {
       return side_top_start(f, p);
     }
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
-    const auto end = march(p, f);
-    if (!end) return std::nullopt;
+    const auto& cap = cap_to_edge(p, f);
+    if (!cap) return std::nullopt;
+    const auto* end = &cap->end;
     if (end->at_equator && cone()) return kink_start(*end, f);
     if (end->at_equator) {
       // Carried only at the equator: a vertical exit when the force is met there to round-off
@@ -443,14 +444,23 @@ class SphereTippedContact {
 
   // The parts in contact once Part I is integrated from `st`: the cap re-marched from the pole
   // (its largest I1, samples and height) and, past the equator, the side down from Part I's start
-  // to the equator.
-  bool attach(Configuration c, const FreeStart& st, double p, bool record,
-              ScaledSolution& sol) const {
+  // to the equator.  Without `maxima` the largest I1 of the parts in contact is the sampled one
+  // (a lower bound, for the iterations of a search that assembles its end again).
+  bool attach(Configuration c, const FreeStart& st, double p, bool record, ScaledSolution& sol,
+              bool maxima = true) const {
     if (c == Configuration::SlipWithPartTwo)
-      return rough_side_solved() ? attach_rough_side(p, record, sol)
-                                 : attach_with_side(st, record, sol);
+      return rough_side_solved() ? attach_rough_side(p, record, sol, maxima)
+                                 : attach_with_side(st, record, sol, maxima);
+    // The free start's march (its steps and I1 the same), unless the cap is sampled: then it is
+    // marched again in shorter steps.
+    std::optional<CapEnd> end;
     InteriorMaximum<SphereCapState> i1_max;
-    const auto end = march(p, sol.f, record ? &sol.part_two : nullptr, &i1_max);
+    if (record) {
+      end = march(p, sol.f, &sol.part_two, &i1_max);
+    } else if (const auto& cap = cap_to_edge(p, sol.f)) {
+      end = cap->end;
+      i1_max = cap->i1_max;
+    }
     // Recorded, the cap is marched in shorter steps: its edge moves by the integration's error,
     // and an edge just short of the equator may be met at it (carrying f there to that error).
     const bool edge_at_equator = end && end->at_equator && end->carried >= sol.f * (1.0 - 1e-7);
@@ -461,7 +471,7 @@ class SphereTippedContact {
       sol.message = "the contact edge on the sphere could not be located again";
       return false;
     }
-    track_cap_maximum(i1_max, p, sol);
+    track_cap_maximum(i1_max, sol, maxima);
     if (end->wrinkle_r >= 0.0) {  // on the cap, inside Part I: the first
       sol.wrinkle_r = end->wrinkle_r;
       sol.wrinkle_radius = end->wrinkle_radius;
@@ -796,15 +806,39 @@ class SphereTippedContact {
     return cap_height(std::min(slope, tangency_)) + on_cone * std::sin(tangency_);
   }
 
-  // The cap that carries f exactly at the equator: its pole stretch and its end.
+  // The cap marched from pole stretch l until it carries f (or to the equator), with its largest
+  // I1 tracked: the last one marched, kept for the attachment that follows the free start at the
+  // same (l, f).
+  struct CapMarch {
+    double l;
+    double f;
+    CapEnd end;
+    InteriorMaximum<SphereCapState> i1_max;
+  };
+  const std::optional<CapMarch>& cap_to_edge(double l, double f) const {
+    if (last_cap_ && last_cap_->l == l && last_cap_->f == f) return last_cap_;
+    InteriorMaximum<SphereCapState> i1_max;
+    const auto end = march(l, f, nullptr, &i1_max);
+    if (end)
+      last_cap_ = CapMarch{l, f, *end, i1_max};
+    else
+      last_cap_.reset();
+    return last_cap_;
+  }
+
+  // The cap that carries f exactly at the equator: its pole stretch, its end and its largest I1
+  // tracked along the march (attach_with_side's, when it samples nothing).
   struct EquatorOnset {
     double stretch;
     CapEnd end;
+    InteriorMaximum<SphereCapState> i1_max;
   };
-  // V at the equator grows with the pole stretch.  The root is bracketed from the last onset
-  // found (the shooting and the depth Newton ask for nearby forces in turn), else from 1, and
-  // refined by TOMS 748 to a few ulps.
+  // V at the equator grows with the pole stretch.  A force asked again (the plan, then the
+  // attachment, at one force) returns the onset found for it (the same march).  Else the root is
+  // bracketed from the last onset found (the shooting and the depth Newton ask for nearby forces
+  // in turn), else from 1, and refined by TOMS 748 to a few ulps.
   std::optional<EquatorOnset> equator_onset(double f) const {
+    if (last_onset_ && last_onset_->f == f) return last_onset_->onset;
     auto g = [&](double l) -> std::optional<double> {
       const auto end = march(l, std::numeric_limits<double>::infinity());
       if (!end) return std::nullopt;
@@ -816,16 +850,14 @@ class SphereTippedContact {
     // forces where V at the equator crosses zero: an unstretched pole leaves the cap in hoop
     // compression towards the equator).
     auto found = [&](double l) -> std::optional<EquatorOnset> {
-      const auto end = march(l, std::numeric_limits<double>::infinity());
+      InteriorMaximum<SphereCapState> i1_max;
+      const auto end = march(l, std::numeric_limits<double>::infinity(), nullptr, &i1_max);
       if (!end || !(std::abs(capacity(*end) - f) <= 1e-3 * f + 1e-9)) return std::nullopt;
-      last_onset_ = {f, l};
-      return EquatorOnset{l, *end};
+      last_onset_ = ForceOnset{f, EquatorOnset{l, *end, i1_max}};
+      return last_onset_->onset;
     };
-    if (last_onset_.first == f) {
-      if (auto same = found(last_onset_.second)) return same;
-    }
     std::optional<double> root;
-    if (const double l0 = last_onset_.second; l0 > 1.0) {
+    if (const double l0 = last_onset_ ? last_onset_->onset.stretch : 0.0; l0 > 1.0) {
       const auto g0 = g(l0);
       if (g0 && *g0 < 0.0) {
         root = shoot_increasing(g,
@@ -1033,14 +1065,15 @@ class SphereTippedContact {
     return FreeStart{{0.0, l1, l2, 0.0}, end.r, kHalfPiCap, 1.0};
   }
 
-  // The cap's largest I1 (refined between samples) into the solution's, if it is larger.
-  void track_cap_maximum(const InteriorMaximum<SphereCapState>& i1_max, double,
-                         ScaledSolution& sol) const {
+  // The cap's largest I1 (refined between samples with `maxima`, else sampled) into the
+  // solution's, if it is larger.
+  void track_cap_maximum(const InteriorMaximum<SphereCapState>& i1_max, ScaledSolution& sol,
+                         bool maxima) const {
     const auto cap = cap_system();
     auto cap_i1 = [&](double r, const SphereCapState& y) {
       return first_invariant(y[1], radius_at(y[0]) / r);
     };
-    const auto found = refined_maximum(i1_max, cap, cap_i1);
+    const auto found = maxima ? refined_maximum(i1_max, cap, cap_i1) : i1_max.sampled();
     if (found.value > sol.max_i1) {
       sol.max_i1 = found.value;
       sol.max_i1_r = found.r;
@@ -1051,7 +1084,7 @@ class SphereTippedContact {
   // Contact past the equator: the cap is the one that carries f at the equator; the side, where
   // R s1 = f, runs from Part I's start down to the equator (the flat punch's Part II without
   // friction, which also gives its length).
-  bool attach_with_side(const FreeStart& st, bool record, ScaledSolution& sol) const {
+  bool attach_with_side(const FreeStart& st, bool record, ScaledSolution& sol, bool maxima) const {
     const double f = sol.f;
     const auto onset = equator_onset(f);
     if (!onset || !(st.r0 >= onset->end.r * (1.0 - 1e-12))) {
@@ -1061,18 +1094,19 @@ class SphereTippedContact {
       return false;
     }
     const double r_eq = std::min(onset->end.r, st.r0);
-    InteriorMaximum<SphereCapState> i1_max;
+    // The onset's march tracked the cap's I1 already; sampled, the cap is marched again in
+    // shorter steps.
+    InteriorMaximum<SphereCapState> i1_max = onset->i1_max;
     std::vector<PartTwoSample> cap_samples;
-    const auto end = march(onset->stretch,
-                           std::numeric_limits<double>::infinity(),
-                           record ? &cap_samples : nullptr,
-                           &i1_max);
-    if (!end) {
-      sol.status = Status::NoConvergence;
-      sol.message = "the cap up to the equator could not be integrated again";
-      return false;
+    if (record) {
+      i1_max = {};
+      if (!march(onset->stretch, std::numeric_limits<double>::infinity(), &cap_samples, &i1_max)) {
+        sol.status = Status::NoConvergence;
+        sol.message = "the cap up to the equator could not be integrated again";
+        return false;
+      }
     }
-    track_cap_maximum(i1_max, onset->stretch, sol);
+    track_cap_maximum(i1_max, sol, maxima);
     // The side, from Part I's start down to the equator.
     const PartTwoSystem<Law> side{law_, s_.a, 0.0, PartTwoEquation::RingBalance, locking_i1_};
     PartTwoState y{st.state[1], 0.0};
@@ -1093,9 +1127,12 @@ class SphereTippedContact {
       sol.message = "the membrane on the probe's side reaches the locking stretch";
       return false;
     }
-    const auto found = refined_maximum(side_max, side, [&](double r, const PartTwoState& x) {
-      return first_invariant(x[0], s_.a / r);
-    });
+    const auto found = maxima ? refined_maximum(side_max,
+                                                side,
+                                                [&](double r, const PartTwoState& x) {
+                                                  return first_invariant(x[0], s_.a / r);
+                                                })
+                              : side_max.sampled();
     if (found.value > sol.max_i1) {
       sol.max_i1 = found.value;
       sol.max_i1_r = found.r;
@@ -1196,7 +1233,7 @@ class SphereTippedContact {
 
   // The cap again (samples, largest I1) and the side up to Part I's start (samples from the
   // equator up, psi = pi/2 + height / rho; its largest I1 refined between steps).
-  bool attach_rough_side(double l, bool record, ScaledSolution& sol) const {
+  bool attach_rough_side(double l, bool record, ScaledSolution& sol, bool maxima) const {
     InteriorMaximum<SphereCapState> i1_max;
     InteriorMaximum<PartTwoState> side_max;
     std::vector<PartTwoSample> cap_samples, side_samples;
@@ -1214,14 +1251,16 @@ class SphereTippedContact {
       sol.message = "the side with friction could not be marched up to where Part I starts again";
       return false;
     }
-    track_cap_maximum(i1_max, l, sol);
+    track_cap_maximum(i1_max, sol, maxima);
     const PartTwoSystem<Law> side_system{
         law_, s_.a, s_.mu, PartTwoEquation::RingBalance, locking_i1_};
     if (side_max.observed()) {
-      const auto found =
-          refined_maximum(side_max, side_system, [&](double r, const PartTwoState& x) {
-            return first_invariant(x[0], s_.a / r);
-          });
+      const auto found = maxima ? refined_maximum(side_max,
+                                                  side_system,
+                                                  [&](double r, const PartTwoState& x) {
+                                                    return first_invariant(x[0], s_.a / r);
+                                                  })
+                                : side_max.sampled();
       if (found.value > sol.max_i1) {
         sol.max_i1 = found.value;
         sol.max_i1_r = found.r;
@@ -1283,9 +1322,17 @@ class SphereTippedContact {
   double tangency_;     // polar angle where the tip sphere ends: pi/2, or the cone's tangency
   double side_radius_;  // radius where the curved profile ends: the cylinder's a, the shank's
   double end_psi_;      // the profile coordinate there (pi/2: the equator; the cone's kink)
-  // The last equator onset found (force, pole stretch): a warm start for the next (one solve
-  // runs single-threaded on its own contact model).
-  mutable std::pair<double, double> last_onset_{-1.0, 0.0};
+  // The last equator onset found and the force it carries: the answer when that force is asked
+  // again, and the warm start for the next (one solve runs single-threaded on its own contact
+  // model, whose settings never change).
+  struct ForceOnset {
+    double f;
+    EquatorOnset onset;
+  };
+  mutable std::optional<ForceOnset> last_onset_;
+  // The last cap marched to its contact edge (cap_to_edge): the free start's, which the
+  // attachment at the same pole stretch and force reuses.
+  mutable std::optional<CapMarch> last_cap_;
 };
 
 }  // namespace puncture::detail
