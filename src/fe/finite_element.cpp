@@ -437,10 +437,11 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
   validate(problem);
   const bool smooth = !sharp_flat_punch(problem.indenter);
   if (smooth && contact == FeContact::Held)
-    throw InvalidInput("indenter",
-                       "the finite elements hold the membrane at the flat punch's sharp edge only; "
-                       "on the " +
-                           describe(problem.indenter) + " they are frictionless");
+    throw InvalidInput(
+        "indenter",
+        "the finite elements hold the membrane at the flat punch's edge only (a sharp "
+        "corner); on the " +
+            describe(problem.indenter) + " they are frictionless");
   if (problem.preload.pressure_mpa > 0.0)
     throw InvalidInput(
         "preload.pressure_mpa",
