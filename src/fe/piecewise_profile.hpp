@@ -61,6 +61,10 @@ class PiecewiseProfile final : public RigidProfile {
   MembranePart segment_part(int segment) const override { return placed_[segment].piece.part; }
   double contact_end() const override { return end_; }
   std::string beyond_contact_end() const override { return beyond_; }
+  double rise_start() const override {
+    const Piece& first = placed_.front().piece;
+    return first.curvature == 0.0 && first.start_angle == 0.0 ? first.length : 0.0;
+  }
 
   // Signed distance to the nearest piece (each clamped to its ends), signed by that piece's
   // outward normal there: exact for a convex body (outside a convex kink both normals agree).

@@ -42,6 +42,8 @@ class RigidProfile {
   // equator), and what lies past it: a contact beyond is outside the model, a status.
   virtual double contact_end() const { return std::numeric_limits<double>::infinity(); }
   virtual std::string beyond_contact_end() const { return {}; }
+  // The arclength where the height starts to rise from the pole's (the end of a flat face).
+  virtual double rise_start() const { return 0.0; }
 };
 
 // The outward normal of the profile at s (away from the probe's body), in (r, height).

@@ -351,6 +351,9 @@ StepResult solve_step(const Problem& problem, const RigidProfile& profile, const
   std::optional<FeState> latest;  // the latest state at this depth starts the next
   StepResult last;
   const double end = profile.contact_end(), before_end = std::nextafter(end, 0.0);
+  // The edge moves in steps relative to where the profile starts to rise (past a flat face: its
+  // steps from the pole would cross a small fillet at once).
+  const double base = profile.rise_start();
   auto angle_at = [&](double edge) {
     if (!(edge > 0.0) || !(profile.height(edge) < s.depth))
       throw std::runtime_error("the contact edge would reach the clamp plane");
@@ -374,12 +377,13 @@ StepResult solve_step(const Problem& problem, const RigidProfile& profile, const
     if (!precise) {
       // A continuation step on the way: one secant step towards the tangency starts the next
       // step well; the requested depths are solved precisely.
-      const double other = angle < 0.0 ? std::min(1.05 * previous_edge, end) : previous_edge / 1.05;
+      const double other = angle < 0.0 ? std::min(base + 1.05 * (previous_edge - base), end)
+                                       : base + (previous_edge - base) / 1.05;
       const double angle_other = angle_at(other);
       if (angle_other != angle) {
         const double secant = other - angle_other * (other - previous_edge) / (angle_other - angle);
-        if (secant > 0.5 * std::min(previous_edge, other) &&
-            secant < 2.0 * std::max(previous_edge, other) && secant <= end) {
+        if (secant - base > 0.5 * (std::min(previous_edge, other) - base) &&
+            secant - base < 2.0 * (std::max(previous_edge, other) - base) && secant <= end) {
           angle_at(secant);
           return last;
         }
@@ -392,11 +396,11 @@ StepResult solve_step(const Problem& problem, const RigidProfile& profile, const
       if (angle_hi <= 0.0) {
         if (hi >= end) return pinned_at_end();
         lo = hi, angle_lo = angle_hi;
-        hi = std::min(hi * factor, end);
+        hi = std::min(base + (hi - base) * factor, end);
         angle_hi = angle_at(hi);
       } else {
         hi = lo, angle_hi = angle_lo;
-        lo /= factor;
+        lo = base + (lo - base) / factor;
         angle_lo = angle_at(lo);
       }
     }

@@ -43,6 +43,9 @@ std::string probe_case_name(const ::testing::TestParamInfo<ProbeCase>& info) {
 }
 
 const std::vector<ProbeCase> kProbes{{"FilletedFlatPunch", FlatPunch{2.0, 0.5}, false},
+                                     // a fillet short next to the face's radius: the edge's
+                                     // steps are relative to the face's end
+                                     {"SmallFillet", FlatPunch{2.0, 0.2}, false},
                                      {"Cone", Cone{2.0, 30.0, 0.5}, true},
                                      {"Ball", Ball{1.0, 2.0}, true}};
 
@@ -97,17 +100,17 @@ TEST_P(FiniteElementProbe, MatchesShootingOverTheLoadingRange) {
   record("worst_max_first_invariant_difference", worst_max_i1);
   record("worst_penetration_mm", worst_penetration);
   // The force converges as h^4 (ConvergesAtTheElementsOrder); measured at 128 elements at most
-  // 1.7e-8 (filleted punch), 1.0e-6 (cone: at the smallest depth, its 0.5 mm tip spanning few
-  // of the free part's logarithmic elements, as the 0.5 mm sphere-tipped probe's) and 1.1e-7
-  // (ball).  3e-6 as for the sphere-tipped probe: three times the worst; a wrong profile
+  // 1.7e-8 and 1.5e-8 (fillets of 0.5 and 0.2 mm), 1.0e-6 (cone: at the smallest depth, its 0.5 mm
+  // tip spanning few of the free part's logarithmic elements, as the 0.5 mm sphere-tipped probe's)
+  // and 1.1e-7 (ball).  3e-6 as for the sphere-tipped probe: three times the worst; a wrong profile
   // (the face, the fillet, the cone's slope) changes the force by percents.
   EXPECT_LT(worst_force, 3e-6);
   // The pole (face) stretch, a derivative of the quadratic elements, O(h^2): measured at most
-  // 5.0e-8, 5.1e-5, 1.2e-4.
+  // 5.0e-8, 7.5e-8, 5.1e-5, 1.2e-4 (fillets, cone, ball).
   EXPECT_LT(worst_pole, 5e-4);
-  // The edge's reference radius, O(h^2): measured at most 2.1e-5, 4.5e-5, 1.2e-5.
+  // The edge's reference radius, O(h^2): measured at most 2.1e-5, 2.1e-5, 4.5e-5, 1.2e-5.
   EXPECT_LT(worst_edge, 1e-4);
-  // The largest I1, a derivative: measured at most 6.7e-7, 1.0e-4, 2.5e-4.
+  // The largest I1, a derivative: measured at most 6.7e-7, 1.5e-7, 1.0e-4, 2.5e-4.
   EXPECT_LT(worst_max_i1, 1e-3);
   // Non-penetration: measured at most 3.5e-16 mm (the solver refuses 1e-10 of the clamp radius).
   EXPECT_LE(worst_penetration, 1e-9);
@@ -124,8 +127,8 @@ TEST_P(FiniteElementProbe, MatchesShootingOverTheLoadingRange) {
 // observed orders log2(e(n) / e(2n)).  Every curvature break before the edge (the face's edge,
 // the fillet's equator, the cone's tangency) ends a contact segment, so the solution is smooth in
 // every element and the force converges at the energy's order, h^4.  Measured: filleted punch
-// (16.9 mm) 6.7e-5, 4.2e-6, 2.6e-7 (orders 3.99, 4.00); cone (8.67 mm) 8.2e-4, 5.2e-5, 3.2e-6
-// (3.99, 4.00); ball (8.04 mm) 4.4e-5, 2.8e-6, 1.7e-7 (3.99, 4.00).
+// (16.9 mm) 6.7e-5, 4.2e-6, 2.6e-7 (orders 3.99, 4.00; 0.2 mm: 6.3e-5, 4.0e-6, 2.5e-7); cone (8.67
+// mm) 8.2e-4, 5.2e-5, 3.2e-6 (3.99, 4.00); ball (8.04 mm) 4.4e-5, 2.8e-6, 1.7e-7 (3.99, 4.00).
 TEST_P(FiniteElementProbe, ConvergesAtTheElementsOrder) {
   const Problem p = probe_problem(GetParam().indenter);
   const double depth = 0.5 * loading_range_mm(p);
@@ -150,7 +153,7 @@ TEST_P(FiniteElementProbe, ConvergesAtTheElementsOrder) {
 
 // The force is the elements' reaction dU/d(depth): against a central difference of the stored
 // energy of neighbouring states (h = 1e-3 mm: truncation ~1e-7 relative).  Measured at 3/4 of
-// the range: -1.2e-8 (filleted punch), 4.5e-7 (cone, past the tangency), -2.5e-7 (ball).
+// the range: -1.2e-8 and 2.8e-8 (fillets), 4.5e-7 (cone, past the tangency), -2.5e-7 (ball).
 TEST_P(FiniteElementProbe, ForceIsTheDerivativeOfTheStoredEnergy) {
   const Problem p = probe_problem(GetParam().indenter);
   const double depth = 0.75 * loading_range_mm(p), h = 1e-3;
