@@ -120,6 +120,9 @@ TEST(ProbeProfiles, FlatFaceIsStraight) {
     EXPECT_EQ(profile->radius_curvature(s), 0.0);
     EXPECT_NEAR(profile->gap(s, -0.01), 0.01, 1e-16);
   }
+  EXPECT_NEAR(profile->rise_start() * kClamp, 1.5, 1e-14);  // the edge moves from the face's end
+  EXPECT_EQ(fe::smooth_profile(Cone{2.0, 30.0, 0.5}, kClamp)->rise_start(), 0.0);
+  EXPECT_EQ(fe::smooth_profile(Ball{1.0, 2.0}, kClamp)->rise_start(), 0.0);
   EXPECT_FALSE(fe::smooth_profile(FlatPunch{2.0, 0.0}, kClamp));  // the sharp corner: none
 }
 
