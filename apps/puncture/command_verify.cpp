@@ -19,7 +19,8 @@ void add_verify_command(CLI::App& app, VerifyFlags& f) {
       "(a second solver minimising the stored energy) at mu' = 0 and held at the edge,\n"
       "the work of the force against the stored energy, and the small-deflection (Foppl)\n"
       "limit; a table of quantity, shooting, second method, difference and verdict.\n"
-      "For the sphere-tipped probe: mu' = 0 and the work (no stick stage, no Foppl disc)");
+      "For the other probes (sphere-tipped, rounded corner, cone, ball): mu' = 0 and the\n"
+      "work (no stick stage, no Foppl disc), up to the puncture or the model's end");
   f.command->footer(
       "The physical flags (see puncture --help) choose the membrane; the friction and stick\n"
       "flags are replaced by the two limits the finite elements cover.  Takes seconds.\n"

@@ -3,12 +3,13 @@
 // membrane discretised by Lagrange finite elements along the meridian, the unknowns being the
 // current radius r and deflection z at the nodes and the reference radii where the contact with
 // the indenter begins and ends; equilibrium minimises the stored energy at a prescribed depth
-// (docs/verification.md, "The finite-element solver").  It covers the flat punch, frictionless
-// (tip, corner and side) and held at its edge, and the sphere-tipped probe, frictionless (the
-// membrane lying on its profile from the pole to a contact edge found by the method:
-// docs/model.md, "Finite elements on a smooth probe"); Coulomb friction is not modelled (it is
-// dissipative: there is no energy to minimise).  Any other probe, or the sphere-tipped probe held,
-// throws InvalidInput("indenter", ...).
+// (docs/verification.md, "The finite-element solver").  It covers the sharp flat punch,
+// frictionless (tip, corner and side) and held at its edge, and every other probe (sphere-tipped,
+// flat punch with a rounded corner, cone, ball) frictionless (the membrane lying on its profile
+// from the pole to a contact edge found by the method: docs/model.md, "Finite elements on a
+// smooth probe"); a contact past the cone's shank or the ball's equator is Status::OutsideModel,
+// as in the shooting.  Coulomb friction is not modelled (it is dissipative: there is no energy to
+// minimise).  A probe other than the sharp flat punch held throws InvalidInput("indenter", ...).
 #include <optional>
 #include <string>
 #include <vector>

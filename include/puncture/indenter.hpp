@@ -53,8 +53,8 @@ double radius_mm(const Indenter& indenter);
 // "ball, radius 3 mm, on a rod of radius 1 mm", "cone, half-angle 30 deg, tip radius 0.5 mm,
 // shank radius 2 mm".
 std::string describe(const Indenter& indenter);
-// Whether it is the flat punch with a sharp corner (fillet radius 0), the probe of the finite
-// elements, verify(), the friction calibration and the energy-release criterion.
+// Whether it is the flat punch with a sharp corner (fillet radius 0): the finite elements held
+// at the edge, verify()'s held and Foppl rows, friction calibration, energy-release criterion.
 bool sharp_flat_punch(const Indenter& indenter);
 
 // A point of a probe's meridian: its distance from the axis and its height above the tip [mm].

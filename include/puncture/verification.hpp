@@ -10,9 +10,10 @@
 //   - the small-deflection (Foppl) limit: F = C(a/A) E H delta^3 / A^2 from an independent
 //     small-strain solver, for held and sliding edges.
 // Friction between the two limits (the user's mu') has no second method: it is covered by the
-// Coulomb and capstan identities of the test suite (tests/solver).  On the sphere-tipped probe
-// only the frictionless limit is checked (force, pole stretch, contact edge, largest I1, work):
-// its stick stage is not modelled, and the Foppl check is the flat punch's.
+// Coulomb and capstan identities of the test suite (tests/solver).  On every other probe
+// (sphere-tipped, rounded corner, cone, ball) only the frictionless limit is checked (force, pole
+// stretch, contact edge, largest I1, work), up to the puncture or, for the cone and the ball, the
+// end of their model: the stick stage is not modelled, and the Foppl check is the flat punch's.
 #include <functional>
 #include <string>
 #include <string_view>
@@ -57,8 +58,8 @@ struct VerificationReport : Outcome {
   int count(Verdict verdict) const;
 };
 
-// Throws std::invalid_argument for an invalid problem or options, and InvalidInput("indenter")
-// for a probe without finite elements (neither the flat punch nor the sphere-tipped probe).
+// Throws std::invalid_argument (InvalidInput naming the parameter) for an invalid problem or
+// options.
 VerificationReport verify(const Problem& problem, const VerifyOptions& options = {});
 
 std::string to_string(Verdict verdict);

@@ -13,8 +13,9 @@
 #include "fe/energy_newton.hpp"
 #include "fe/meridian_mesh.hpp"
 #include "fe/part_evaluation.hpp"
+#include "fe/probe_profiles.hpp"
+#include "fe/rigid_profile.hpp"
 #include "fe/smooth_probe.hpp"
-#include "fe/sphere_tipped_profile.hpp"
 
 namespace puncture {
 namespace {
@@ -434,16 +435,13 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
                                         const std::vector<double>& depths_mm, FeContact contact,
                                         const FeOptions& options) {
   validate(problem);
-  const auto* sphere = std::get_if<SphereTipped>(&problem.indenter);
-  if (!sharp_flat_punch(problem.indenter) && !sphere)
-    throw InvalidInput("indenter",
-                       "the finite-element method is implemented for the sharp flat punch and "
-                       "the sphere-tipped probe only, not the " +
-                           describe(problem.indenter));
-  if (sphere && contact == FeContact::Held)
-    throw InvalidInput("indenter",
-                       "the finite elements hold the membrane at the flat punch's edge only; on "
-                       "the sphere-tipped probe they are frictionless");
+  const bool smooth = !sharp_flat_punch(problem.indenter);
+  if (smooth && contact == FeContact::Held)
+    throw InvalidInput(
+        "indenter",
+        "the finite elements hold the membrane at the flat punch's edge only (a sharp "
+        "corner); on the " +
+            describe(problem.indenter) + " they are frictionless");
   if (problem.preload.pressure_mpa > 0.0)
     throw InvalidInput(
         "preload.pressure_mpa",
@@ -461,10 +459,9 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
           "depths must be finite, > 0 and increasing (got {} mm after {} mm)", d, last));
     last = d;
   }
-  if (sphere) {
-    const fe::SphereTippedProfile profile(sphere->radius_mm / A);
-    return fe::solve_smooth_probe(problem, profile, depths_mm, options);
-  }
+  if (smooth)
+    return fe::solve_smooth_probe(
+        problem, *fe::smooth_profile(problem.indenter, A), depths_mm, options);
   Scaled s;
   s.a = radius_mm(problem.indenter) / A;
   s.clamp = problem.preload.prestretch;

@@ -6,6 +6,8 @@
 // derivatives (exact Hessians through the chain rule), the contact edge the tangent and the
 // non-penetration check the signed gap of a point.  All lengths are normalised by the stress-free
 // clamp radius, like the rest of the finite elements.  A new smooth probe is one more subclass.
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "puncture/membrane_fields.hpp"
@@ -36,6 +38,12 @@ class RigidProfile {
   // Arclength of the profile point closest to (r, y): where a point of the free membrane would
   // land if the contact took it (the starting guesses of a growing contact).
   virtual double closest_arclength(double r, double y) const = 0;
+  // The arclength the contact edge may reach at most (the cone's kink onto its shank, the ball's
+  // equator), and what lies past it: a contact beyond is outside the model, a status.
+  virtual double contact_end() const { return std::numeric_limits<double>::infinity(); }
+  virtual std::string beyond_contact_end() const { return {}; }
+  // The arclength where the height starts to rise from the pole's (the end of a flat face).
+  virtual double rise_start() const { return 0.0; }
 };
 
 // The outward normal of the profile at s (away from the probe's body), in (r, height).

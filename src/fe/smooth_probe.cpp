@@ -273,7 +273,9 @@ FeState make_state(const Problem& problem, const RigidProfile& profile, const Me
     }
     state.parts.push_back(std::move(out));
   }
-  state.part_two = segments > 1;
+  state.part_two = std::any_of(mesh.parts.begin(), mesh.parts.end(), [](const MeshPart& p) {
+    return p.profile && p.part == MembranePart::Side;
+  });
   // The pole's equibiaxial stretch, ds/dR at R = 0.
   const FePart& cap = state.parts.front();
   const auto pole = evaluate_part(cap, mesh.order, 0.0);
@@ -295,6 +297,7 @@ struct StepResult : Outcome {
 // there (the sine of the angle between the free part and the profile's tangent): < 0 when it
 // enters the probe (the edge is too close to the pole), > 0 when it kinks outward (too far).
 double departure_angle(const FeState& state, const RigidProfile& profile, double edge) {
+  // (`edge` picks the profile's normal: just before a kink for the piece that ends there.)
   const FePart& free_part = state.parts.back();
   std::array<double, kMaxOrder + 1> n{}, dn{};
   shape_functions(state.order, -1.0, n, dn);
@@ -329,6 +332,9 @@ StepResult solve_at_edge(const Problem& problem, const RigidProfile& profile, co
   return step;
 }
 
+// Thrown when a contact edge past the profile's contact_end() would be needed.
+struct BeyondContactEnd {};
+
 // The state at depth s.depth, its contact edge found by the method.  With the edge prescribed,
 // the energy's minimum over everything else, E(edge), is not minimal at the true edge: the free
 // part may enter the probe, so E falls as the edge moves towards the pole, and dE/d(edge)
@@ -344,25 +350,40 @@ StepResult solve_step(const Problem& problem, const RigidProfile& profile, const
                       bool precise) {
   std::optional<FeState> latest;  // the latest state at this depth starts the next
   StepResult last;
+  const double end = profile.contact_end(), before_end = std::nextafter(end, 0.0);
+  // The edge moves in steps relative to where the profile starts to rise (past a flat face: its
+  // steps from the pole would cross a small fillet at once).
+  const double base = profile.rise_start();
   auto angle_at = [&](double edge) {
     if (!(edge > 0.0) || !(profile.height(edge) < s.depth))
       throw std::runtime_error("the contact edge would reach the clamp plane");
+    if (edge > end) throw BeyondContactEnd{};
     last = solve_at_edge(problem, profile, s, edge, latest ? &*latest : previous, options);
     if (!last.ok()) throw std::runtime_error(last.message);
     latest = last.state;
-    return departure_angle(last.state, profile, edge);
+    // At the contact's end, against the profile before it (the cone, not its shank).
+    return departure_angle(last.state, profile, std::min(edge, before_end));
+  };
+  // The free part would enter the profile before its end even with the edge there: at a convex
+  // kink (the cone's shank) the membrane leaves the kink at an angle between the two pieces, the
+  // edge pinned there, while it stays out of the piece after it; else the contact passes the end.
+  auto pinned_at_end = [&] {
+    if (last.edge != end) angle_at(end);
+    if (departure_angle(last.state, profile, end) < 0.0) throw BeyondContactEnd{};
+    return last;
   };
   try {
-    const double angle = angle_at(previous_edge);
+    const double angle = angle_at(std::min(previous_edge, end));
     if (!precise) {
       // A continuation step on the way: one secant step towards the tangency starts the next
       // step well; the requested depths are solved precisely.
-      const double other = angle < 0.0 ? 1.05 * previous_edge : previous_edge / 1.05;
+      const double other = angle < 0.0 ? std::min(base + 1.05 * (previous_edge - base), end)
+                                       : base + (previous_edge - base) / 1.05;
       const double angle_other = angle_at(other);
       if (angle_other != angle) {
         const double secant = other - angle_other * (other - previous_edge) / (angle_other - angle);
-        if (secant > 0.5 * std::min(previous_edge, other) &&
-            secant < 2.0 * std::max(previous_edge, other)) {
+        if (secant - base > 0.5 * (std::min(previous_edge, other) - base) &&
+            secant - base < 2.0 * (std::max(previous_edge, other) - base) && secant <= end) {
           angle_at(secant);
           return last;
         }
@@ -373,12 +394,13 @@ StepResult solve_step(const Problem& problem, const RigidProfile& profile, const
     constexpr double factor = 1.25;
     for (int k = 0; k < 200 && (angle_lo >= 0.0 || angle_hi <= 0.0); ++k) {
       if (angle_hi <= 0.0) {
+        if (hi >= end) return pinned_at_end();
         lo = hi, angle_lo = angle_hi;
-        hi *= factor;
+        hi = std::min(base + (hi - base) * factor, end);
         angle_hi = angle_at(hi);
       } else {
         hi = lo, angle_hi = angle_lo;
-        lo /= factor;
+        lo = base + (lo - base) / factor;
         angle_lo = angle_at(lo);
       }
     }
@@ -402,6 +424,11 @@ StepResult solve_step(const Problem& problem, const RigidProfile& profile, const
     StepResult failed;
     failed.message = e.what();
     return failed;
+  } catch (const BeyondContactEnd&) {
+    StepResult outside;
+    outside.status = Status::OutsideModel;
+    outside.message = profile.beyond_contact_end();
+    return outside;
   }
   return last;
 }
@@ -433,6 +460,7 @@ std::vector<FeState> solve_smooth_probe(const Problem& problem, const RigidProfi
     const double target = target_mm / A;
     int halvings = 0;
     std::string failure;
+    Status failure_status = FeState{}.status;
     while (depth < target && failure.empty()) {
       s.depth = std::min(target, depth + step);
       if (target - s.depth < 1e-3 * step) s.depth = target;  // no sliver of a last step
@@ -456,6 +484,10 @@ std::vector<FeState> solve_smooth_probe(const Problem& problem, const RigidProfi
         edge = result.edge;
         previous = std::move(result.state);
         step = std::min(2.0 * step, options.max_depth_step);
+      } else if (result.status == Status::OutsideModel) {
+        // Past the profile's end at this depth: no smaller step changes that.
+        failure = fmt::format("beyond depth {:.6g} mm {}", depth * A, result.message);
+        failure_status = Status::OutsideModel;
       } else if (++halvings > options.max_step_halvings) {
         failure = fmt::format(
             "no equilibrium found beyond depth {:.6g} mm: {}", depth * A, result.message);
@@ -471,6 +503,7 @@ std::vector<FeState> solve_smooth_probe(const Problem& problem, const RigidProfi
     if (!failure.empty()) {
       FeState failed;
       failed.contact = FeContact::Frictionless;
+      failed.status = failure_status;
       failed.message = failure;
       for (std::size_t k = states.size(); k < depths_mm.size(); ++k) {
         failed.depth_mm = depths_mm[k];

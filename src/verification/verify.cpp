@@ -29,10 +29,8 @@ std::string group_of(FeContact contact) {
 }
 
 // A probe whose finite elements lie on its smooth profile (frictionless only: no held limit, and
-// no Foppl disc for the small-deflection check).
-bool smooth_probe(const Problem& problem) {
-  return std::holds_alternative<SphereTipped>(problem.indenter);
-}
+// no Foppl disc for the small-deflection check): every probe but the sharp flat punch.
+bool smooth_probe(const Problem& problem) { return !sharp_flat_punch(problem.indenter); }
 
 // The user's membrane in one of the two limits the finite elements cover.
 Problem limit_problem(const Problem& problem, FeContact contact) {
@@ -43,11 +41,17 @@ Problem limit_problem(const Problem& problem, FeContact contact) {
   return q;
 }
 
-// How deep the limit goes: its predicted puncture, or the end of its loading curve.
+// How deep the limit goes: its predicted puncture, or the end of its loading curve (or of the
+// model).
 std::optional<double> depth_range(const Problem& q, std::string& why) {
   const PuncturePrediction puncture = predict_puncture(q);
   if (puncture.ok()) return puncture.depth_mm;
-  const LoadingCurve curve = loading_curve(q);
+  // A model that ends before the puncture (the cone's shank, the ball's equator): the curve
+  // followed towards twice the clamp radius stops at its last state.
+  CurveOptions to_the_end;
+  if (puncture.status == Status::OutsideModel)
+    to_the_end.max_depth_mm = 2.0 * q.geometry.clamp_radius_mm;
+  const LoadingCurve curve = loading_curve(q, to_the_end);
   if (!curve.points.empty() && curve.points.back().depth_mm > 0.0) {
     why = fmt::format("no puncture ({}); up to the end of the loading curve", puncture.message);
     return curve.points.back().depth_mm;
@@ -354,11 +358,6 @@ void compare_small_deflection(const Problem& problem, Checks& checks) {
 
 VerificationReport verify(const Problem& problem, const VerifyOptions& options) {
   validate(problem);
-  if (!sharp_flat_punch(problem.indenter) && !smooth_probe(problem))
-    throw InvalidInput("indenter",
-                       "the verification methods are implemented for the sharp flat punch and "
-                       "the sphere-tipped probe only, not the " +
-                           describe(problem.indenter));
   if (problem.preload.pressure_mpa > 0.0)
     throw InvalidInput(
         "preload.pressure_mpa",
@@ -373,8 +372,8 @@ VerificationReport verify(const Problem& problem, const VerifyOptions& options) 
   if (options.depths < 1 || options.depths > 50)
     throw std::invalid_argument(
         fmt::format("depths: must be in the range 1 to 50, got {}", options.depths));
-  // The sphere-tipped probe: the frictionless limit alone (its stick stage is not modelled, and
-  // the small-deflection check is the flat punch's Foppl disc).
+  // A smooth probe (every probe but the sharp flat punch): the frictionless limit alone (its
+  // stick stage is not modelled, and the small-deflection check is the flat punch's Foppl disc).
   const bool smooth = smooth_probe(problem);
   Checks checks(options, smooth ? 5 : 2 * 5 + 2);
   for (const FeContact contact : {FeContact::Frictionless, FeContact::Held})

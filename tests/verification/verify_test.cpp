@@ -84,6 +84,32 @@ TEST(Verify, PassesOnTheSphereTippedProbe) {
   EXPECT_EQ(int(r.checks.size()), 9);  // nothing held, no small-deflection rows
 }
 
+// The other smooth probes on the paper's membrane: the same rows as the sphere-tipped probe's.
+// The filleted punch up to its puncture; the cone and the ball up to the end of their model
+// (the cone's membrane then leaves the kink onto the shank, the ball's contact nears its
+// equator): their curves end there with OutsideModel before the puncture.
+TEST(Verify, PassesOnTheFilletedPunchTheConeAndTheBall) {
+  VerifyOptions options;
+  options.elements = 32;
+  options.depths = 2;
+  for (const Indenter& indenter :
+       {Indenter{FlatPunch{2.0, 0.5}}, Indenter{Cone{2.0, 30.0, 0.5}}, Indenter{Ball{1.0, 2.0}}}) {
+    Problem p;
+    p.indenter = indenter;
+    const VerificationReport r = verify(p, options);
+    for (const auto& c : r.checks)
+      EXPECT_EQ(c.verdict, Verdict::Pass)
+          << describe(indenter) << ": " << c.group << " " << c.quantity << " " << c.condition
+          << ": " << c.difference << " (" << c.note << ")";
+    EXPECT_TRUE(r.ok()) << describe(indenter) << ": " << r.message;
+    EXPECT_EQ(count_quantity(r, "frictionless", "force [N]"), 2);
+    EXPECT_EQ(count_quantity(r, "frictionless", "pole stretch"), 2);
+    EXPECT_EQ(count_quantity(r, "frictionless", "contact edge R [mm]"), 2);
+    EXPECT_EQ(count_quantity(r, "frictionless", "work of F = stored energy [N mm]"), 1);
+    EXPECT_EQ(int(r.checks.size()), 9) << describe(indenter);
+  }
+}
+
 // With mu' = 0 the printed Eq. (18) keeps s1 constant along Part II, the energy R s1
 // (docs/model.md §4): once the membrane wraps the side the forces differ by percents.
 TEST(Verify, FailsForThePrintedPartTwoEquation) {
