@@ -20,10 +20,13 @@
 #include "puncture/finite_element.hpp"
 #include "puncture/verification.hpp"
 #include "solver_test_support.hpp"
+#include "sphere_model_energy.hpp"
 
 namespace puncture::detail {
 namespace {
 
+using test::energy_at;
+using test::EnergyAndDepth;
 using test::record;
 
 Problem filleted_problem(double fillet_mm, double friction = 0.0, double radius_mm = 2.0) {
@@ -48,52 +51,6 @@ SolverOptions tight() {
   o.shooting_tol = 1e-13;
   o.record_fields = false;
   return o;
-}
-
-// Stored energy (/ (2 pi G H A^2)) and depth (/ A) at force f, each part integrated on its own:
-// the face and the fillet from the march (the face's W(l, l) R_b^2 / 2 is its start), the side by
-// Gauss-Kronrod quadrature with lambda1 from R s1 = f, Part I by the free-membrane system with
-// the running energy.
-struct EnergyAndDepth {
-  double energy;
-  double depth;
-  Configuration configuration;
-};
-
-std::optional<EnergyAndDepth> energy_at(const FilletShooting& shooting, double f) {
-  const auto sol = shooting.solve(Stage::Slip, f);
-  if (!sol.ok()) return std::nullopt;
-  const auto& contact = shooting.contact();
-  const Gent& law = contact.law();
-  const double a = contact.settings().a;
-  const auto st = contact.free_start(sol.configuration, f, sol.parameter);
-  if (!st) return std::nullopt;
-  double energy = 0.0;
-  if (sol.configuration == Configuration::SlipWithoutPartTwo) {
-    const auto cap = contact.march(sol.parameter, f);
-    if (!cap) return std::nullopt;
-    energy += cap->state[2];
-  } else {
-    const auto onset = contact.equator_onset(f);
-    if (!onset) return std::nullopt;
-    energy += onset->end.state[2];
-    auto side_density = [&](double r) {
-      const double l2 = a / r;
-      const double l1 = *invert_radial_stress(law, f / r, l2);
-      return strain_energy_density(law, l1, l2, first_invariant(l1, l2)) * r;
-    };
-    energy += boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
-        side_density, onset->end.r, st->r0, 15, 1e-14);
-  }
-  const FreeMembraneSystem<Gent, StrainsAndIntegrals> system{
-      law, TransverseLoad{f, 0.0}, law.locking_i1()};
-  StrainsAndIntegrals::State x{st->state[0], st->state[1] - 1.0, st->state[2] - 1.0, 0.0, 0.0, 0.0};
-  const IntegrationSettings integration{1e-13, 1e-15, 1000000};
-  if (!integrate_part(
-          system, x, st->r0, 1.0, integration, [](double, const auto&) { return true; }))
-    return std::nullopt;
-  energy += x[5];
-  return EnergyAndDepth{energy, sol.depth, sol.configuration};
 }
 
 // The indenter's derivative of the stored energy with respect to the depth over the force,

@@ -22,11 +22,14 @@
 #include "mechanics/inverse_stretch.hpp"
 #include "puncture/finite_element.hpp"
 #include "solver_test_support.hpp"
+#include "sphere_model_energy.hpp"
 #include "verification/foppl_membrane.hpp"
 
 namespace puncture::detail {
 namespace {
 
+using test::energy_at;
+using test::EnergyAndDepth;
 using test::record;
 
 Problem sphere_problem(MaterialLaw law = Gent{125.0}, double radius_mm = 2.0) {
@@ -52,53 +55,6 @@ GentShooting make_shooting(const Problem& p, const SolverOptions& o) {
                       shooting_settings(o),
                       contact_settings(p, std::get<SphereTipped>(p.indenter)),
                       false);
-}
-
-// Stored energy (/ (2 pi G H A^2)) and depth (/ A) of the equilibrium at force f, each part
-// integrated independently of the solve's own bookkeeping: the cap's int W R dR from its march,
-// the side's by Gauss-Kronrod quadrature of W(lambda1(R), a / R) R with lambda1 from R s1 = f,
-// Part I by the free-membrane system that carries the energy (StrainsAndIntegrals).
-struct EnergyAndDepth {
-  double energy;
-  double depth;
-  Configuration configuration;
-};
-
-std::optional<EnergyAndDepth> energy_at(const GentShooting& shooting, double f) {
-  const auto sol = shooting.solve(Stage::Slip, f);
-  if (!sol.ok()) return std::nullopt;
-  const auto& contact = shooting.contact();
-  const Gent& law = contact.law();
-  const double a = contact.settings().a;
-  const auto st = contact.free_start(sol.configuration, f, sol.parameter);
-  if (!st) return std::nullopt;
-  double energy = 0.0;
-  if (sol.configuration == Configuration::SlipWithoutPartTwo) {
-    const auto cap = contact.march(sol.parameter, f);
-    if (!cap) return std::nullopt;
-    energy += cap->state[2];
-  } else {
-    const auto onset = contact.equator_onset(f);
-    if (!onset) return std::nullopt;
-    energy += onset->end.state[2];
-    auto side_density = [&](double r) {
-      const double l2 = a / r;
-      const double l1 = *invert_radial_stress(law, f / r, l2);
-      return strain_energy_density(law, l1, l2, first_invariant(l1, l2)) * r;
-    };
-    energy += boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
-        side_density, onset->end.r, st->r0, 15, 1e-14);
-  }
-  // Part I from its start, in strains with the running energy.
-  const FreeMembraneSystem<Gent, StrainsAndIntegrals> system{
-      law, TransverseLoad{f, 0.0}, law.locking_i1()};
-  StrainsAndIntegrals::State x{st->state[0], st->state[1] - 1.0, st->state[2] - 1.0, 0.0, 0.0, 0.0};
-  const IntegrationSettings integration{1e-13, 1e-15, 1000000};
-  if (!integrate_part(
-          system, x, st->r0, 1.0, integration, [](double, const auto&) { return true; }))
-    return std::nullopt;
-  energy += x[5];
-  return EnergyAndDepth{energy, sol.depth, sol.configuration};
 }
 
 // Work conjugacy, frictionless: the indenter's force is the derivative of the membrane's stored

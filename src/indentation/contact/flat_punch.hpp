@@ -34,6 +34,7 @@
 #include "mechanics/inverse_stretch.hpp"
 #include "numerics/even_samples.hpp"
 #include "numerics/interior_maximum.hpp"
+#include "numerics/root_in_bracket.hpp"
 #include "numerics/shooting.hpp"
 
 namespace puncture::detail {
@@ -232,16 +233,7 @@ class FlatPunchContact {
         sol.message = "the corner of Part II could not be located (the material locks near it)";
         return false;
       }
-      std::uintmax_t iterations = 100;
-      const auto bracket =
-          boost::math::tools::toms748_solve(gap_at,
-                                            r_hit,
-                                            r_prev,
-                                            gap_hit,
-                                            gap_prev,
-                                            boost::math::tools::eps_tolerance<double>(50),
-                                            iterations);
-      r_corner = 0.5 * (bracket.first + bracket.second);
+      r_corner = root_in_bracket(gap_at, r_hit, r_prev, gap_hit, gap_prev);
       corner_state =
           step_or_advance(side, y_prev, r_prev, r_corner, part_one_.settings().integration);
       // The corner is located to ulps, where the gap (the difference of two stresses of about
@@ -760,16 +752,7 @@ class FlatPunchContact {
       };
       const double g_prev = gap_at(r_prev), g_hit = gap_at(r_hit);
       if (!(g_prev * g_hit <= 0.0)) return std::nullopt;
-      std::uintmax_t iterations = 100;
-      const auto bracket =
-          boost::math::tools::toms748_solve(gap_at,
-                                            r_prev,
-                                            r_hit,
-                                            g_prev,
-                                            g_hit,
-                                            boost::math::tools::eps_tolerance<double>(50),
-                                            iterations);
-      r_top = 0.5 * (bracket.first + bracket.second);
+      r_top = root_in_bracket(gap_at, r_prev, r_hit, g_prev, g_hit);
       const auto y_top = step_or_advance(side, y_prev, r_prev, r_top, fine);
       if (!y_top) return std::nullopt;
       y = *y_top;

@@ -40,6 +40,7 @@
 #include "indentation/membrane_fields.hpp"
 #include "mechanics/inverse_stretch.hpp"
 #include "numerics/interior_maximum.hpp"
+#include "numerics/root_in_bracket.hpp"
 #include "numerics/shooting.hpp"
 
 namespace puncture::detail {
@@ -287,16 +288,7 @@ class SphereTippedContact {
           const auto x = at(r);
           return x ? event(r, *x).value : 1.0;
         };
-        std::uintmax_t iterations = 100;
-        const auto bracket =
-            boost::math::tools::toms748_solve(g,
-                                              r_prev,
-                                              r_end,
-                                              g_prev,
-                                              g_end,
-                                              boost::math::tools::eps_tolerance<double>(50),
-                                              iterations);
-        r_root = 0.5 * (bracket.first + bracket.second);
+        r_root = root_in_bracket(g, r_prev, r_end, g_prev, g_end);
       }
       const auto x = at(r_root);
       if (!x) return std::nullopt;
@@ -994,16 +986,7 @@ class SphereTippedContact {
       } else if (g_hi <= 0.0) {
         slope = kHalfPiCap;
       } else {
-        std::uintmax_t iterations = 100;
-        const auto bracket =
-            boost::math::tools::toms748_solve(g,
-                                              tangency_,
-                                              kHalfPiCap,
-                                              g_lo,
-                                              g_hi,
-                                              boost::math::tools::eps_tolerance<double>(50),
-                                              iterations);
-        slope = 0.5 * (bracket.first + bracket.second);
+        slope = root_in_bracket(g, tangency_, kHalfPiCap, g_lo, g_hi);
       }
       ratio = std::exp(s_.mu * (slope - tangency_));
     }
@@ -1209,16 +1192,7 @@ class SphereTippedContact {
       };
       const double g_prev = gap_at(r_prev), g_hit = gap_at(r_hit);
       if (!(g_prev * g_hit <= 0.0)) return std::nullopt;
-      std::uintmax_t iterations = 100;
-      const auto bracket =
-          boost::math::tools::toms748_solve(gap_at,
-                                            r_prev,
-                                            r_hit,
-                                            g_prev,
-                                            g_hit,
-                                            boost::math::tools::eps_tolerance<double>(50),
-                                            iterations);
-      r_top = 0.5 * (bracket.first + bracket.second);
+      r_top = root_in_bracket(gap_at, r_prev, r_hit, g_prev, g_hit);
       const auto x = step_or_advance(side, y_prev, r_prev, r_top, part_one_.settings().integration);
       if (!x) return std::nullopt;
       y = *x;

@@ -1,0 +1,65 @@
+#pragma once
+// The stored energy and depth of a sphere-model contact's equilibrium (the sphere-tipped probe,
+// the flat punch with a rounded corner), computed apart from the solver's own bookkeeping: the
+// work-conjugacy tests differentiate them.
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <optional>
+#include <type_traits>
+
+#include "indentation/shooting.hpp"
+#include "mechanics/free_membrane_ode.hpp"
+#include "mechanics/inverse_stretch.hpp"
+
+namespace puncture::test {
+
+// Stored energy (/ (2 pi G H A^2)) and depth (/ A) of the equilibrium at force f, each part
+// integrated independently of the solve's own bookkeeping: the cap's int W R dR from its march
+// (with a flat face, the face's W(l, l) R_b^2 / 2 is the march's start),
+// the side's by Gauss-Kronrod quadrature of W(lambda1(R), a / R) R with lambda1 from R s1 = f,
+// Part I by the free-membrane system that carries the energy (StrainsAndIntegrals).
+struct EnergyAndDepth {
+  double energy;
+  double depth;
+  Configuration configuration;
+};
+
+template <class Shooting>
+std::optional<EnergyAndDepth> energy_at(const Shooting& shooting, double f) {
+  using namespace puncture::detail;
+  const auto sol = shooting.solve(Stage::Slip, f);
+  if (!sol.ok()) return std::nullopt;
+  const auto& contact = shooting.contact();
+  const auto& law = contact.law();
+  const double a = contact.settings().a;
+  const auto st = contact.free_start(sol.configuration, f, sol.parameter);
+  if (!st) return std::nullopt;
+  double energy = 0.0;
+  if (sol.configuration == Configuration::SlipWithoutPartTwo) {
+    const auto cap = contact.march(sol.parameter, f);
+    if (!cap) return std::nullopt;
+    energy += cap->state[2];
+  } else {
+    const auto onset = contact.equator_onset(f);
+    if (!onset) return std::nullopt;
+    energy += onset->end.state[2];
+    auto side_density = [&](double r) {
+      const double l2 = a / r;
+      const double l1 = *invert_radial_stress(law, f / r, l2);
+      return strain_energy_density(law, l1, l2, first_invariant(l1, l2)) * r;
+    };
+    energy += boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
+        side_density, onset->end.r, st->r0, 15, 1e-14);
+  }
+  // Part I from its start, in strains with the running energy.
+  const FreeMembraneSystem<std::decay_t<decltype(law)>, StrainsAndIntegrals> system{
+      law, TransverseLoad{f, 0.0}, law.locking_i1()};
+  StrainsAndIntegrals::State x{st->state[0], st->state[1] - 1.0, st->state[2] - 1.0, 0.0, 0.0, 0.0};
+  const IntegrationSettings integration{1e-13, 1e-15, 1000000};
+  if (!integrate_part(
+          system, x, st->r0, 1.0, integration, [](double, const auto&) { return true; }))
+    return std::nullopt;
+  energy += x[5];
+  return EnergyAndDepth{energy, sol.depth, sol.configuration};
+}
+
+}  // namespace puncture::test
