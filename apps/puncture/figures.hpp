@@ -15,8 +15,8 @@ struct FiguresFlags {
 };
 void add_figures_options(CLI::App& figures, FiguresFlags& flags);
 
-// Every figure's data as JSON: "inputs", "fig11", "fig12a", "fig12b", "fig13", "fig14", "probes".  The
-// base problem's indenter radius and friction are replaced by each figure's own; Fig. 14 uses
+// Every figure's data as JSON: "inputs", "fig11", "fig12a", "fig12b", "fig13", "fig14", "probes".
+// The base problem's indenter radius and friction are replaced by each figure's own; Fig. 14 uses
 // the base's pressure (3e-4 MPa without one, "pressure_assumed").
 std::string figures_json(const Problem& base, const CurveFlags& curve);
 

@@ -18,7 +18,7 @@ struct ProblemFlags {
   double clamp_radius_mm = defaults.geometry.clamp_radius_mm;
   std::string indenter = "flat";
   double indenter_radius_mm = radius_mm(defaults.indenter);
-  double fillet_radius_mm = 0.0;  // the flat punch's corner fillet (0: sharp)
+  double fillet_radius_mm = 0.0;     // the flat punch's corner fillet (0: sharp)
   double ball_radius_mm = 0.0;       // read only when --ball-radius is given
   double cone_half_angle_deg = 0.0;  // read only when --cone-half-angle is given
   double tip_radius_mm = 0.0;        // read only when --tip-radius is given
