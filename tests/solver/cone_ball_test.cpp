@@ -28,16 +28,6 @@ Problem with_probe(Indenter indenter) {
   return p;
 }
 
-// Tolerances well below the derivative checks' needs (defaults: 1e-10 and 1e-10).
-SolverOptions strict_options() {
-  SolverOptions o;
-  o.integration_rel_tol = 1e-13;
-  o.integration_abs_tol = 1e-15;
-  o.shooting_tol = 1e-13;
-  o.record_fields = false;
-  return o;
-}
-
 using Shooting = IndentationShooting<SphereTippedContact<Gent>>;
 
 template <class Shape>
@@ -95,7 +85,7 @@ std::optional<StoredEnergy> stored_energy_at(const Shooting& shooting, double f)
 // and at the kink (Part I leaving over it with a line force); 1e-6 is the bound.
 TEST(ConeProbe, WorkConjugacyOnTheTipTheConeAndTheKink) {
   const Problem p = with_probe(Cone{2.0, 30.0, 0.5});
-  const auto shooting = shooting_of<Cone>(p, strict_options());
+  const auto shooting = shooting_of<Cone>(p, test::tight_options());
   const double tangency = std::numbers::pi / 2.0 - std::numbers::pi / 6.0;
   const double f_shank = profile_end_force(shooting);
   ASSERT_TRUE(std::isfinite(f_shank));
@@ -272,7 +262,7 @@ TEST(ConeProbe, CoulombSlipOnTheConeAndTheKink) {
   EXPECT_GT(forces[2], forces[1]);
   Problem p = with_probe(Cone{2.0, 30.0, 0.5});
   p.friction = 0.18;
-  const auto shooting = shooting_of<Cone>(p, strict_options());
+  const auto shooting = shooting_of<Cone>(p, test::tight_options());
   const double f_shank = profile_end_force(shooting);
   ASSERT_TRUE(std::isfinite(f_shank));
   for (const double f : {3e-2, 0.97 * f_shank}) {
@@ -334,7 +324,7 @@ TEST(BallProbe, SphereTippedToTheEquatorThenAStatus) {
 // force, F A^2 / (E H delta^3) agreeing to O((delta/A)^2) as for the sphere-tipped probe.
 TEST(BallProbe, SmallDeflectionMatchesFopplSphere) {
   const Problem p = with_probe(Ball{1.0, 3.0});
-  const auto shooting = shooting_of<Ball>(p, strict_options());
+  const auto shooting = shooting_of<Ball>(p, test::tight_options());
   const double a = shooting.contact().settings().a;
   double last = 0.0;
   for (const double f : {1e-5, 1e-6, 1e-7}) {

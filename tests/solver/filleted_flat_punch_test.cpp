@@ -44,15 +44,6 @@ FilletShooting make_fillet_shooting(const Problem& p, const SolverOptions& o) {
                         false);
 }
 
-SolverOptions tight() {
-  SolverOptions o;
-  o.integration_rel_tol = 1e-13;
-  o.integration_abs_tol = 1e-15;
-  o.shooting_tol = 1e-13;
-  o.record_fields = false;
-  return o;
-}
-
 // The indenter's derivative of the stored energy with respect to the depth over the force,
 // (dU/ddelta) / F, by the four-point central difference in the force (step 1e-3 f: truncation
 // ~1e-12, noise of the 1e-13 solves ~1e-10).
@@ -83,7 +74,7 @@ std::optional<double> conjugacy_ratio(const FilletShooting& shooting, double f,
 TEST(FilletedFlatPunch, WorkConjugacy) {
   for (const double rho : {0.1, 1.0}) {
     const Problem p = filleted_problem(rho);
-    const auto shooting = make_fillet_shooting(p, tight());
+    const auto shooting = make_fillet_shooting(p, test::tight_options());
     bool saw_side = false, saw_fillet = false;
     for (const double f : {1e-3, 1e-2, 5e-2, 0.13, 0.3}) {
       Configuration c = Configuration::Unloaded;
@@ -311,7 +302,7 @@ TEST(FilletedFlatPunch, CoulombSlipOnTheFilletAndTheSide) {
     last = diff;
   }
   const Problem rough = filleted_problem(0.1, 0.18);
-  const auto shooting = make_fillet_shooting(rough, tight());
+  const auto shooting = make_fillet_shooting(rough, test::tight_options());
   for (const double f : {0.01}) {  // on the fillet (energy_at's side is the frictionless one)
     const auto ratio = conjugacy_ratio(shooting, f);
     ASSERT_TRUE(ratio.has_value()) << f;

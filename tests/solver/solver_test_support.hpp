@@ -30,6 +30,17 @@ inline Problem paper_problem(MaterialLaw law = Gent{125.0}, double friction = 0.
   return p;
 }
 
+// Solver tolerances well below what derivative checks need (the defaults are 1e-10): 1e-13 on
+// the integration and the clamp residual, no fields recorded.
+inline SolverOptions tight_options() {
+  SolverOptions o;
+  o.integration_rel_tol = 1e-13;
+  o.integration_abs_tol = 1e-15;
+  o.shooting_tol = 1e-13;
+  o.record_fields = false;
+  return o;
+}
+
 // F [N] at normalised force f = F / (2 pi G H A).
 inline double force_at(const Problem& p, double f) { return f * force_scale_n(p); }
 

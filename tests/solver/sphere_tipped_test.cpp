@@ -38,16 +38,6 @@ Problem sphere_problem(MaterialLaw law = Gent{125.0}, double radius_mm = 2.0) {
   return p;
 }
 
-// Tolerances well below the derivative checks' needs (defaults: 1e-10 and 1e-10).
-SolverOptions tight_options() {
-  SolverOptions o;
-  o.integration_rel_tol = 1e-13;
-  o.integration_abs_tol = 1e-15;
-  o.shooting_tol = 1e-13;
-  o.record_fields = false;
-  return o;
-}
-
 using GentShooting = IndentationShooting<SphereTippedContact<Gent>>;
 
 GentShooting make_shooting(const Problem& p, const SolverOptions& o) {
@@ -66,7 +56,7 @@ GentShooting make_shooting(const Problem& p, const SolverOptions& o) {
 // the edge at the wrong place) would miss by far more.
 TEST(SphereTipped, WorkConjugacyAtSeveralDepths) {
   const Problem p = sphere_problem();
-  const auto shooting = make_shooting(p, tight_options());
+  const auto shooting = make_shooting(p, test::tight_options());
   // About 2.9, 6.2, 11.5 mm (contact on the hemisphere) and 20.7, 34.4 mm (on the side).
   for (const double f : {1e-3, 1e-2, 5e-2, 0.13, 0.3}) {
     const double h = 1e-3 * f;
@@ -213,7 +203,7 @@ TEST(SphereTipped, ContactPressureCarriesTheForce) {
 // curvature matters at the Föppl order.)
 TEST(SphereTipped, SmallDeflectionMatchesFopplSphere) {
   const Problem p = sphere_problem();
-  const auto shooting = make_shooting(p, tight_options());
+  const auto shooting = make_shooting(p, test::tight_options());
   const double a = shooting.contact().settings().a;
   double last = 0.0;
   for (const double f : {1e-5, 1e-6, 1e-7, 1e-8}) {
@@ -395,7 +385,7 @@ TEST(SphereTipped, CoulombSlipOnTheHemisphere) {
   for (const double mu : {0.05, 0.18}) {
     Problem p = sphere_problem();
     p.friction = mu;
-    const auto shooting = make_shooting(p, tight_options());
+    const auto shooting = make_shooting(p, test::tight_options());
     const double f = 0.02, h = 1e-3 * f;
     std::vector<EnergyAndDepth> s;
     for (const double k : {-2.0, -1.0, 1.0, 2.0}) {
