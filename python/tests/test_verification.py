@@ -48,7 +48,7 @@ def test_finite_elements_on_the_sphere_tipped_probe():
     for s in states:
         assert s.ok, s.message
         e = pu.solve_at_depth(problem, s.depth_mm, "slip")
-        # 64 quadratic elements: the force within ~2e-7 of the shooting's (docs/model.md §15.1),
+        # 64 quadratic elements: the force within ~2e-7 of the shooting's (docs/model.md §15.3),
         # the pole stretch (a derivative, O(h^2)) within ~2e-4.
         assert s.force_n == pytest.approx(e.force_n, rel=2e-6)
         assert s.part_three_stretch == pytest.approx(e.part_three_stretch, rel=1e-3)

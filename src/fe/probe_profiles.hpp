@@ -1,6 +1,6 @@
 #pragma once
 // The profile the finite elements lie on for each smooth probe of include/puncture/indenter.hpp,
-// normalised by the stress-free clamp radius (docs/model.md §15.1): the sphere-tipped probe,
+// normalised by the stress-free clamp radius (docs/model.md §15.3): the sphere-tipped probe,
 // the flat punch with a rounded corner, the cone and the ball.  None for the sharp flat punch,
 // whose corner the elements treat as a layout of their own (finite_element.cpp).
 #include <memory>
