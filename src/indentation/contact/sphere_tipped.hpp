@@ -1064,6 +1064,22 @@ class SphereTippedContact {
     }
   }
 
+  // The side's largest I1 (refined between samples when `maxima`) into the solution's, if larger.
+  void track_side_maximum(const InteriorMaximum<PartTwoState>& side_max,
+                          const PartTwoSystem<Law>& side, ScaledSolution& sol, bool maxima) const {
+    const auto found = maxima ? refined_maximum(side_max,
+                                                side,
+                                                [&](double r, const PartTwoState& x) {
+                                                  return first_invariant(x[0], s_.a / r);
+                                                })
+                              : side_max.sampled();
+    if (found.value > sol.max_i1) {
+      sol.max_i1 = found.value;
+      sol.max_i1_r = found.r;
+      sol.max_i1_radius = s_.a;
+    }
+  }
+
   // Contact past the equator: the cap is the one that carries f at the equator; the side, where
   // R s1 = f, runs from Part I's start down to the equator (the flat punch's Part II without
   // friction, which also gives its length).
@@ -1110,17 +1126,7 @@ class SphereTippedContact {
       sol.message = "the membrane on the probe's side reaches the locking stretch";
       return false;
     }
-    const auto found = maxima ? refined_maximum(side_max,
-                                                side,
-                                                [&](double r, const PartTwoState& x) {
-                                                  return first_invariant(x[0], s_.a / r);
-                                                })
-                              : side_max.sampled();
-    if (found.value > sol.max_i1) {
-      sol.max_i1 = found.value;
-      sol.max_i1_r = found.r;
-      sol.max_i1_radius = s_.a;
-    }
+    track_side_maximum(side_max, side, sol, maxima);
     const double length = y[1];  // current length of the side
     if (record) {
       sol.part_two = std::move(cap_samples);
@@ -1228,19 +1234,7 @@ class SphereTippedContact {
     track_cap_maximum(i1_max, sol, maxima);
     const PartTwoSystem<Law> side_system{
         law_, s_.a, s_.mu, PartTwoEquation::RingBalance, locking_i1_};
-    if (side_max.observed()) {
-      const auto found = maxima ? refined_maximum(side_max,
-                                                  side_system,
-                                                  [&](double r, const PartTwoState& x) {
-                                                    return first_invariant(x[0], s_.a / r);
-                                                  })
-                                : side_max.sampled();
-      if (found.value > sol.max_i1) {
-        sol.max_i1 = found.value;
-        sol.max_i1_r = found.r;
-        sol.max_i1_radius = s_.a;
-      }
-    }
+    if (side_max.observed()) track_side_maximum(side_max, side_system, sol, maxima);
     if (record) {
       sol.part_two = std::move(cap_samples);
       for (const auto& x : side_samples)
