@@ -167,6 +167,14 @@ std::vector<TestSpec> read_manifest(const std::string& path, const ProblemFlags&
     TestSpec spec{
         "", base, base_format, fmt::format("{}:{} (test {})", path, t.location().line(), n)};
     if (!t.is_table()) throw InputError(spec.where + ": each test must be a [[test]] table");
+    // A test with its own indenter gives that probe's dimensions (read in any key order): the
+    // flags' describe their own probe.
+    if (t.contains("indenter")) {
+      spec.problem.fillet_radius_mm = 0.0;
+      spec.problem.ball_radius_mm.reset();
+      spec.problem.cone_half_angle_deg.reset();
+      spec.problem.tip_radius_mm.reset();
+    }
     for (const auto& [key, value] : t.as_table()) {
       const auto at = fmt::format("{}:{}: key '{}'", path, value.location().line(), key);
       const auto number = [&]() {
@@ -185,10 +193,18 @@ std::vector<TestSpec> read_manifest(const std::string& path, const ProblemFlags&
         spec.problem.clamp_radius_mm = number();
       else if (key == "indenter") {
         spec.problem.indenter = text();
-        if (spec.problem.indenter != "flat" && spec.problem.indenter != "sphere-tipped")
-          throw InputError(at + ": must be flat or sphere-tipped");
+        if (!is_indenter_shape(spec.problem.indenter))
+          throw InputError(at + ": must be flat, sphere-tipped, ball or cone");
       } else if (key == "indenter-radius")
         spec.problem.indenter_radius_mm = number();
+      else if (key == "fillet-radius")
+        spec.problem.fillet_radius_mm = number();
+      else if (key == "ball-radius")
+        spec.problem.ball_radius_mm = number();
+      else if (key == "cone-half-angle")
+        spec.problem.cone_half_angle_deg = number();
+      else if (key == "tip-radius")
+        spec.problem.tip_radius_mm = number();
       else if (key == "thickness")
         spec.problem.thickness_mm = number();
       else if (key == "prestretch")
@@ -216,7 +232,8 @@ std::vector<TestSpec> read_manifest(const std::string& path, const ProblemFlags&
       else
         throw InputError(at +
                          ": unknown (per-test keys: file, clamp-radius, indenter, "
-                         "indenter-radius, thickness, prestretch, friction, critical-i1, "
+                         "indenter-radius, fillet-radius, ball-radius, cone-half-angle, "
+                         "tip-radius, thickness, prestretch, friction, critical-i1, "
                          "stick, depth-column, force-column, depth-unit, force-unit, "
                          "contact-depth)");
     }
@@ -262,9 +279,12 @@ void add_fit_curve_command(CLI::App& fit, FitCurveFlags& f) {
       "  indenter-radius = 1\n"
       "  friction = 1.95\n"
       "  contact-depth = 0.12\n"
-      "Per-test keys: file, clamp-radius, indenter, indenter-radius, thickness, prestretch,\n"
-      "friction, critical-i1, stick, depth-column, force-column, depth-unit, force-unit,\n"
-      "contact-depth.  The free parameters are shared by every test.\n"
+      "Per-test keys: file, clamp-radius, indenter (flat, sphere-tipped, ball or cone),\n"
+      "indenter-radius, fillet-radius, ball-radius, cone-half-angle, tip-radius,\n"
+      "thickness, prestretch, friction, critical-i1, stick, depth-column, force-column,\n"
+      "depth-unit, force-unit, contact-depth (the flags' names and units).  A test that\n"
+      "changes the indenter gives its own probe's dimensions.  The free parameters are\n"
+      "shared by every test.\n"
       "A fit on a bound (--bound), or one explaining less than --min-r2 of the force\n"
       "variance (the data are not a curve of the model), exits 2 saying so.\n"
       "Examples:\n"

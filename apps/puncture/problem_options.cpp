@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string_view>
@@ -188,7 +189,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "--tip-radius tangent to it, shank of radius --indenter-radius;\n"
                      "sliding only, solved until the contact reaches the shank)")
           ->group(kGeometry)
-          ->check(CLI::IsMember({"flat", "sphere-tipped", "ball", "cone"}))
+          ->check(CLI::IsMember(
+              std::vector<std::string>(kIndenterShapes.begin(), kIndenterShapes.end())))
           ->capture_default_str();
   f.indenter_radius_option =
       app.add_option("--indenter-radius",
@@ -207,25 +209,22 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "corner; > 0: sliding only, --stick none, no gas pressure)")
           ->group(kGeometry)
           ->capture_default_str();
-  f.ball_radius_option =
-      app.add_option("--ball-radius",
-                     f.ball_radius_mm,
-                     "Radius RB of the ball, with --indenter ball [mm] (larger than the\n"
-                     "rod's --indenter-radius, smaller than the clamp radius)")
-          ->group(kGeometry);
-  f.cone_half_angle_option =
-      app.add_option("--cone-half-angle",
-                     f.cone_half_angle_deg,
-                     "Half-angle of the cone from its axis, with --indenter cone [degrees]\n"
-                     "(in (0, 90))")
-          ->group(kGeometry);
-  f.tip_radius_option =
-      app.add_option("--tip-radius",
-                     f.tip_radius_mm,
-                     "Radius RT of the cone's spherical tip, with --indenter cone [mm] (> 0:\n"
-                     "a sharp cone makes the stretch at its apex unbounded at a finite\n"
-                     "force; RT cos(half-angle) <= --indenter-radius)")
-          ->group(kGeometry);
+  app.add_option("--ball-radius",
+                 f.ball_radius_mm,
+                 "Radius RB of the ball, with --indenter ball [mm] (larger than the\n"
+                 "rod's --indenter-radius, smaller than the clamp radius)")
+      ->group(kGeometry);
+  app.add_option("--cone-half-angle",
+                 f.cone_half_angle_deg,
+                 "Half-angle of the cone from its axis, with --indenter cone [degrees]\n"
+                 "(in (0, 90))")
+      ->group(kGeometry);
+  app.add_option("--tip-radius",
+                 f.tip_radius_mm,
+                 "Radius RT of the cone's spherical tip, with --indenter cone [mm] (> 0:\n"
+                 "a sharp cone makes the stretch at its apex unbounded at a finite\n"
+                 "force; RT cos(half-angle) <= --indenter-radius)")
+      ->group(kGeometry);
   app.add_option("--thickness", f.thickness_mm, "Undeformed membrane thickness H [mm] (> 0)")
       ->group(kGeometry)
       ->capture_default_str();
@@ -424,20 +423,22 @@ namespace {
 
 // The ball's and the cone's dimensions: required with their shape, refused with another.
 void append_probe_shape_flag_errors(const ProblemFlags& f, std::vector<std::string>& errors) {
-  const std::array<std::pair<const CLI::Option*, const char*>, 3> shape_flags{
-      {{f.ball_radius_option, "ball"},
-       {f.cone_half_angle_option, "cone"},
-       {f.tip_radius_option, "cone"}}};
-  for (const auto& [option, shape] : shape_flags) {
-    if (!option) continue;
-    if (f.indenter == shape && !given(option))
-      errors.push_back(
-          fmt::format("{}: required with --indenter {} (no default: give the probe's dimension)",
-                      option->get_name(),
-                      shape));
-    else if (f.indenter != shape && given(option))
+  struct ShapeDimension {
+    const std::optional<double>& value;
+    const char* flag;
+    const char* shape;
+  };
+  const std::array<ShapeDimension, 3> dimensions{
+      {{f.ball_radius_mm, "--ball-radius", "ball"},
+       {f.cone_half_angle_deg, "--cone-half-angle", "cone"},
+       {f.tip_radius_mm, "--tip-radius", "cone"}}};
+  for (const auto& [value, flag, shape] : dimensions) {
+    if (f.indenter == shape && !value)
       errors.push_back(fmt::format(
-          "{}: applies only to --indenter {}, not {}", option->get_name(), shape, f.indenter));
+          "{}: required with --indenter {} (no default: give the probe's dimension)", flag, shape));
+    else if (f.indenter != shape && value)
+      errors.push_back(
+          fmt::format("{}: applies only to --indenter {}, not {}", flag, shape, f.indenter));
   }
 }
 
@@ -447,12 +448,13 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   if (f.indenter == "sphere-tipped")
     p.indenter = SphereTipped{f.indenter_radius_mm};
   else if (f.indenter == "ball")
-    p.indenter = Ball{f.indenter_radius_mm, f.ball_radius_mm};
+    p.indenter = Ball{f.indenter_radius_mm, f.ball_radius_mm.value_or(0.0)};
   else if (f.indenter == "cone")
-    p.indenter = Cone{f.indenter_radius_mm, f.cone_half_angle_deg, f.tip_radius_mm};
+    p.indenter = Cone{
+        f.indenter_radius_mm, f.cone_half_angle_deg.value_or(0.0), f.tip_radius_mm.value_or(0.0)};
   else
     p.indenter = FlatPunch{f.indenter_radius_mm, f.fillet_radius_mm};
-  if (f.indenter != "flat" && given(f.fillet_radius_option))
+  if (f.indenter != "flat" && (given(f.fillet_radius_option) || f.fillet_radius_mm != 0.0))
     errors.push_back(
         "--fillet-radius: applies to the flat punch only (--indenter flat); the other "
         "probes are rounded by their own shape");
@@ -520,6 +522,10 @@ std::vector<ValidationError> with_law_flags(std::vector<ValidationError> validat
 }
 
 }  // namespace
+
+bool is_indenter_shape(const std::string& name) {
+  return std::find(kIndenterShapes.begin(), kIndenterShapes.end(), name) != kIndenterShapes.end();
+}
 
 Problem make_problem(const ProblemFlags& f) {
   std::vector<std::string> errors;

@@ -2,6 +2,8 @@
 // The physical flags shared by every subcommand: membrane, indenter, material, contact and
 // failure.  Defaults are the library's (the paper's lubricated silicone membrane).
 #include <CLI/CLI.hpp>
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,10 +20,12 @@ struct ProblemFlags {
   double clamp_radius_mm = defaults.geometry.clamp_radius_mm;
   std::string indenter = "flat";
   double indenter_radius_mm = radius_mm(defaults.indenter);
-  double fillet_radius_mm = 0.0;     // the flat punch's corner fillet (0: sharp)
-  double ball_radius_mm = 0.0;       // read only when --ball-radius is given
-  double cone_half_angle_deg = 0.0;  // read only when --cone-half-angle is given
-  double tip_radius_mm = 0.0;        // read only when --tip-radius is given
+  double fillet_radius_mm = 0.0;  // the flat punch's corner fillet (0: sharp)
+  // The ball's and the cone's dimensions have no default: empty until given (a flag, or a key of
+  // a `fit curve` manifest), required with their shape and refused with another.
+  std::optional<double> ball_radius_mm;
+  std::optional<double> cone_half_angle_deg;
+  std::optional<double> tip_radius_mm;
   double thickness_mm = defaults.geometry.thickness_mm;
   double prestretch = defaults.preload.prestretch;
   double pressure_mpa = defaults.preload.pressure_mpa;
@@ -50,9 +54,6 @@ struct ProblemFlags {
   CLI::Option* indenter_option = nullptr;
   CLI::Option* indenter_radius_option = nullptr;
   CLI::Option* fillet_radius_option = nullptr;
-  CLI::Option* ball_radius_option = nullptr;
-  CLI::Option* cone_half_angle_option = nullptr;
-  CLI::Option* tip_radius_option = nullptr;
   CLI::Option* j_lim_option = nullptr;
   CLI::Option* mr_alpha_option = nullptr;
   CLI::Option* shear_modulus_option = nullptr;
@@ -71,6 +72,11 @@ struct ProblemFlags {
 
 // Registers the flags on `app` (with units and allowed values in their help).
 void add_problem_options(CLI::App& app, ProblemFlags& flags);
+
+// The probe shapes --indenter takes.
+inline constexpr std::array<const char*, 4> kIndenterShapes{
+    "flat", "sphere-tipped", "ball", "cone"};
+bool is_indenter_shape(const std::string& name);
 
 // The problem the flags describe.  Throws InputError listing every invalid parameter, each
 // prefixed with its flag, using the library's validation_errors().

@@ -84,3 +84,13 @@ puncture_cli_test(fit_curve_huber
        --loss huber --loss-scale 0.005)
 puncture_cli_bad_input(fit_curve_loss_without_scale "--loss-scale: --loss cauchy needs a scale"
   fit curve ${dir}/indentation_record.csv --free jlim --loss cauchy)
+# A manifest test with its own probe: a cone's record (made with G = 0.075 MPa, J_lim = 200,
+# without noise) fitted back from the defaults G = 0.06, J_lim = 125 (to the 5 digits shown).
+puncture_cli_test(fit_curve_manifest_cone
+  STDOUT "  shear-modulus +0\\.075 \\+- ${number} MPa"
+  STDOUT2 "  jlim +200 \\+- ${number}  95 %"
+  STDOUT3 "cone, half-angle 30 deg, tip radius 0\\.2 mm, shank radius 2 mm"
+  ARGS fit curve --manifest ${dir}/fit_curve_cone.toml --free shear-modulus,jlim)
+puncture_cli_bad_input(fit_curve_manifest_cone_without_tip
+  "fit_curve_cone_no_tip.toml:2 \\(test 1\\): invalid input:\n  --tip-radius: required with --indenter cone"
+  fit curve --manifest ${dir}/fit_curve_cone_no_tip.toml --free jlim)
