@@ -47,6 +47,26 @@ class FlagParser {
   std::size_t parses_ = 0;
 };
 
+// The probe shape a dimension flag belongs to, or null for the other flags.
+const char* shape_of_dimension(const std::string& flag) {
+  if (flag == "fillet-radius") return "flat";
+  if (flag == "ball-radius") return "ball";
+  if (flag == "cone-half-angle" || flag == "tip-radius") return "cone";
+  return nullptr;
+}
+
+// With the indenter among the swept parameters, a fixed dimension describes one of the shapes
+// (e.g. the cone's tip radius in a flat / sphere-tipped / cone grid): it applies to that shape's
+// points only.  A fixed indenter keeps every dimension, so a mismatch is still refused.
+bool applies_to_point(const std::string& flag, const std::vector<std::string>& names,
+                      const SweepPoint& point) {
+  const char* shape = shape_of_dimension(flag);
+  if (!shape) return true;
+  const auto swept = std::find(names.begin(), names.end(), "indenter");
+  if (swept == names.end()) return true;
+  return point.texts[static_cast<std::size_t>(swept - names.begin())] == shape;
+}
+
 }  // namespace
 
 ProblemOfPoint problem_of_flags(const SweepSpec& spec,
@@ -58,7 +78,8 @@ ProblemOfPoint problem_of_flags(const SweepSpec& spec,
     // '--flag=value' keeps a value such as -0.1 from reading as a flag; CLI11 takes the
     // arguments last first.
     std::vector<std::string> args;
-    for (const auto& [flag, value] : fixed) args.push_back(fmt::format("--{}={}", flag, value));
+    for (const auto& [flag, value] : fixed)
+      if (applies_to_point(flag, names, point)) args.push_back(fmt::format("--{}={}", flag, value));
     for (std::size_t j = 0; j < names.size(); ++j)
       args.push_back(fmt::format("--{}={}", names[j], point.texts[j]));
     std::reverse(args.begin(), args.end());
