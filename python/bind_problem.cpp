@@ -294,7 +294,7 @@ void bind_problem(py::module_& m) {
       m,
       "SphereTipped",
       "A cylinder ending in a hemisphere of the same radius (sliding only, stick rule none;\n"
-      "with friction only while the contact stays on the hemisphere, for now)");
+      "Coulomb slip on the hemisphere and the cylinder side)");
   sphere_tipped
       .def(py::init([](double radius_mm) { return SphereTipped{radius_mm}; }),
            py::arg("radius_mm") = SphereTipped{}.radius_mm)

@@ -1,5 +1,5 @@
-// `puncture figures`' probe comparison (figure_probes.hpp).  Without friction: the one case every
-// probe's model follows to puncture (with friction the sphere-tipped probe stops at its equator).
+// `puncture figures`' probe comparison (figure_probes.hpp).  Without friction: the shapes alone
+// compared, each followed to puncture.
 #include "figure_probes.hpp"
 
 #include <array>

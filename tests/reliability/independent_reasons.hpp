@@ -59,8 +59,8 @@ inline std::string unconfirmed_reason(const Problem& p, const PuncturePrediction
   // No state just beyond the end, and the end is physical.
   const Equilibrium beyond = solve_at_force(p, *end * (1.0 + 1e-6), stage, options);
   if (beyond.ok()) return "a state exists beyond the end";
-  // Beyond the end: no state (physical), or a state the model does not cover (e.g. friction on
-  // the sphere-tipped probe's side); a numerical failure there is no end.
+  // Beyond the end: no state (physical), or a state the model does not cover (e.g. the ball's
+  // contact past its equator); a numerical failure there is no end.
   if (beyond.failure_kind() == FailureKind::Numerical) return "the states end numerically";
   // The pinned branch ends where the membrane leaves the edge vertically: within 1e-9 of the end
   // the slope's deficit (going as the square root of the force's) is far below 0.01 rad.

@@ -100,9 +100,9 @@ inline Problem random_membrane(std::uint64_t seed, int index, Laws laws = Laws::
     p.preload.pressure_mpa = log_uniform(gen, 0.01, 1.2) * scale;
     p.stick = {StickRule::None, 0.0};
     // Frictionless: the flat punch takes no friction under pressure yet, and the sphere-tipped
-    // probe's Coulomb slip ends where its contact reaches the cylinder side (outside the model,
-    // with a fuzzy numerical edge there; beyond a friction of ~4 it fails numerically with or
-    // without pressure: seed 20261127 cases 21, 63, 193, 249 of an earlier draw).
+    // probe's Coulomb slip was drawn when it ended at the cylinder side (beyond a friction of ~4
+    // it fails numerically with or without pressure: seed 20261127 cases 21, 63, 193, 249 of an
+    // earlier draw); its side friction (docs/model.md §15) is not drawn here yet.
     p.friction = 0.0;
     if (index % 2 == 1) p.indenter = SphereTipped{radius_mm(p.indenter)};
   }

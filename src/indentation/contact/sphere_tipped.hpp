@@ -5,18 +5,19 @@
 //   the cap     the membrane lying on the hemisphere from the pole (R = 0) to the contact edge
 //               (or to the equator); the pole is equibiaxial, the rest integrated outward in R
 //   the side    once the contact passes the equator: the membrane on the cylinder, where without
-//               friction R s1 = f is constant (the flat punch's Part II with mu = 0)
+//               friction R s1 = f is constant (the flat punch's Part II with mu = 0), with
+//               friction d(R s1)/dR = mu s2 (the flat punch's Part II)
 //   Part I      the free membrane, leaving the hemisphere tangentially at the contact edge, or
 //               the side vertically
 // Configurations and shooting parameters:
 //   SlipWithoutPartTwo  contact on the hemisphere only; p = the pole's equibiaxial stretch
-//   SlipWithPartTwo     contact past the equator; p = lambda2 where Part I leaves the side
-//                       (> a / A).  The pole stretch is then fixed by the force alone: the cap
-//                       carries f at the equator.
-// Coulomb slip on the hemisphere (the membrane slides away from the pole; friction mu p points to
-// it).  Not implemented: friction on the cylinder side (a contact that reaches it with mu > 0 is a
-// status, never a number) and a stick stage (validation_errors refuses the stick rules).
-// (The filleted flat punch below solves friction on the side: rough_side.)
+//   SlipWithPartTwo     contact past the equator; without friction p = lambda2 where Part I
+//                       leaves the side (> a / A): the pole stretch is then fixed by the force
+//                       alone, the cap carries f at the equator.  With friction p = the pole
+//                       stretch, the side marched up from the equator (rough_side).
+// Coulomb slip on the hemisphere and on the cylinder side (the membrane slides away from the
+// pole; friction mu p points to it).  Not implemented: a stick stage (validation_errors refuses
+// the stick rules).
 //
 // The flat punch with a rounded corner (fillet radius rho < a, docs/model.md §19) is the same
 // model with a flat face of radius b = a - rho before the arc (SphereTippedSettings::face): the
@@ -53,7 +54,7 @@ enum class BeyondTipSphere { CylinderSide, Neck, Cone };
 
 struct SphereTippedSettings {
   double a;   // tip (and cylinder) radius / stress-free clamp radius A / L0
-  double mu;  // Coulomb friction coefficient (on the hemisphere; the side only without)
+  double mu;  // Coulomb friction coefficient (on the tip sphere and the cylinder side)
   // The flat punch with a rounded corner (docs/model.md §19) is this probe with a flat face of
   // radius b = a - rho inside an arc of radius rho: b / (A / L0); 0 for the hemisphere.
   double face = 0.0;
@@ -417,7 +418,7 @@ class SphereTippedContact {
         const auto side = rough_side(p, f, [](double, const PartTwoState&) {});
         return side ? std::optional<FreeStart>(side->start) : std::nullopt;
       }
-      if (s_.mu != 0.0) return std::nullopt;  // friction on the side: not implemented
+      if (s_.mu != 0.0) return std::nullopt;  // the ball and the cone: no side (a status)
       return side_top_start(f, p);
     }
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
@@ -526,12 +527,6 @@ class SphereTippedContact {
       return plan;
     }
     if (g_onset >= 0.0 && rough_side_solved()) return rough_side_plan(*onset, g_onset, counted);
-    if (g_onset >= 0.0 && s_.mu != 0.0) {
-      plan.configuration = Configuration::SlipWithPartTwo;
-      plan.status = Status::OutsideModel;
-      plan.message = kFrictionNotImplemented;
-      return plan;
-    }
     if (g_onset >= 0.0) {
       // The side exists: shoot on lambda2 where Part I leaves it, between a / A (the top at the
       // clamp, residual a / A - 1 < 0) and the equator's lambda2.
@@ -649,7 +644,7 @@ class SphereTippedContact {
     if (!f_on) return std::nullopt;
     const auto onset = equator_onset(*f_on);
     if (!onset) return std::nullopt;
-    // (With friction on the filleted punch's side the parameter is the face stretch in both.)
+    // (With friction on the side the parameter is the pole (face) stretch in both.)
     const double p = rough_side_solved() ? onset->stretch : s_.a / onset->end.r;
     auto sol = shooting.assemble(Configuration::SlipWithPartTwo, *f_on, p, false);
     if (!sol.integrated) return std::nullopt;
@@ -918,9 +913,6 @@ class SphereTippedContact {
 
   const SphereTippedSettings& settings() const { return s_; }
 
-  static constexpr const char* kFrictionNotImplemented =
-      "outside the sphere-tipped model: the contact reaches the cylinder side, where friction is "
-      "not implemented yet (friction on the hemisphere is; without friction the side is solved)";
   static constexpr const char* kFilletStickNotImplemented =
       "the stick stage on the filleted flat punch is not implemented yet: only sliding (stick "
       "rule none) is solved";
@@ -1142,13 +1134,16 @@ class SphereTippedContact {
     return true;
   }
 
-  // ---- Coulomb slip on the side, past the fillet's equator (filleted flat punch only; the
-  // sphere-tipped probe keeps its status, docs/model.md §19).  Both sliding configurations are
-  // shot on the face stretch l: the cap (face and fillet) to the equator, where it carries
-  // R_e s1 <= f, then the side marched up from it with friction (PartTwoSystem: d(R s1)/dR =
-  // mu s2) until R s1 = f, where Part I leaves vertically.  An initial-value problem from the
-  // axis outward, as the flat punch's under a gas pressure with friction.
-  bool rough_side_solved() const { return s_.mu != 0.0 && s_.face > 0.0; }
+  // ---- Coulomb slip on the cylinder side, past the equator of the tip sphere or of the fillet
+  // (docs/model.md §15, §19; the ball and the cone end at their equator or kink, a status).  Both
+  // sliding configurations are shot on the pole (face) stretch l: the cap (face and arc) to the
+  // equator, where it carries R_e s1 <= f - P a^2 / 2, then the side marched up from it with
+  // friction (PartTwoSystem: d(R s1)/dR = mu (s2 + P a lambda1)) until R s1 = f - P a^2 / 2,
+  // where Part I leaves vertically.  An initial-value problem from the axis outward, as the flat
+  // punch's under a gas pressure with friction.
+  bool rough_side_solved() const {
+    return s_.mu != 0.0 && s_.beyond == BeyondTipSphere::CylinderSide;
+  }
 
   struct RoughSide {
     FreeStart start;
@@ -1157,26 +1152,29 @@ class SphereTippedContact {
   };
   // observe(R, (lambda1, y)) at the side's steps, y = minus the height above the equator.  Empty
   // when the cap carries more than f at the equator (no side; 1e-9 relative is the onset
-  // itself) or cannot be marched.  A top beyond the clamp stands in as Part I of zero length at
-  // the clamp, whose residual a - L0 < 0 the top's approach to the clamp tends to.
+  // itself) or cannot be marched.  Under a gas pressure the membrane's pull is f less the gas's
+  // share on the probe's cross-section, P a^2 / 2 (side_top_start).  A top beyond the clamp stands
+  // in as Part I of zero length at the clamp, whose residual a - L0 < 0 the top's approach to the
+  // clamp tends to.
   template <class Observer>
   std::optional<RoughSide> rough_side(double l, double f, Observer&& observe,
                                       std::vector<PartTwoSample>* cap_samples = nullptr,
                                       InteriorMaximum<SphereCapState>* i1_max = nullptr) const {
     const auto end = march(l, std::numeric_limits<double>::infinity(), cap_samples, i1_max);
-    if (!end || !end->at_equator || !(f > 0.0)) return std::nullopt;
+    const double pull = pressure_ == 0.0 ? f : f - gas_load(kHalfPiCap);
+    if (!end || !end->at_equator || !(pull > 0.0)) return std::nullopt;
     const double q_equator = end->vertical;  // R s1 there
-    if (!(q_equator <= f * (1.0 + 1e-9))) return std::nullopt;
-    const PartTwoSystem<Law> side{law_, s_.a, s_.mu, PartTwoEquation::RingBalance, locking_i1_};
+    if (!(q_equator <= pull * (1.0 + 1e-9))) return std::nullopt;
+    const PartTwoSystem<Law> side = rough_side_system();
     IntegrationSettings integration = part_one_.settings().integration;
     if (cap_samples) integration.max_step = s_.a / std::max(1, part_one_.settings().field_points);
     auto excess = [&](double r, const PartTwoState& y) {
-      const double v = r * membrane_stress(law_, y[0], s_.a / r).s1 - f;
+      const double v = r * membrane_stress(law_, y[0], s_.a / r).s1 - pull;
       return std::isfinite(v) ? v : 1.0;
     };
     PartTwoState y{end->state[1], 0.0}, y_prev = y;
     double r_top = end->r, r_prev = end->r, r_hit = -1.0;
-    if (q_equator >= f) {
+    if (q_equator >= pull) {
       observe(r_top, y);
     } else {
       if (!integrate_part(side, y, end->r, 1.0, integration, [&](double r, const PartTwoState& x) {
@@ -1204,9 +1202,9 @@ class SphereTippedContact {
       y = *x;
       observe(r_top, y);
     }
-    // lambda1 at the top from R s1 = f exactly, as the frictionless start has it.
+    // lambda1 at the top from R s1 = f - P a^2 / 2 exactly, as the frictionless start has it.
     const double l2 = s_.a / r_top;
-    const auto l1 = invert_radial_stress(law_, f / r_top, l2, y[0]);
+    const auto l1 = invert_radial_stress(law_, pull / r_top, l2, y[0]);
     if (!l1) return std::nullopt;
     return RoughSide{{{0.0, *l1, l2, 0.0}, r_top, kHalfPiCap, 1.0}, -y[1], *end};
   }
@@ -1232,9 +1230,7 @@ class SphereTippedContact {
       return false;
     }
     track_cap_maximum(i1_max, sol, maxima);
-    const PartTwoSystem<Law> side_system{
-        law_, s_.a, s_.mu, PartTwoEquation::RingBalance, locking_i1_};
-    if (side_max.observed()) track_side_maximum(side_max, side_system, sol, maxima);
+    if (side_max.observed()) track_side_maximum(side_max, rough_side_system(), sol, maxima);
     if (record) {
       sol.part_two = std::move(cap_samples);
       for (const auto& x : side_samples)
@@ -1248,8 +1244,13 @@ class SphereTippedContact {
     return true;
   }
 
-  // Friction on the side: the face stretch below the equator onset's (where the side has zero
-  // length and the residual is the side indicator, >= 0), from the first of 1 + (onset - 1)
+  // The cylinder side with Coulomb slip (and the gas pressure's share of the contact pressure).
+  PartTwoSystem<Law> rough_side_system() const {
+    return {law_, s_.a, s_.mu, PartTwoEquation::RingBalance, locking_i1_, pressure_};
+  }
+
+  // Friction on the side: the pole (face) stretch below the equator onset's (where the side has
+  // zero length and the residual is the side indicator, >= 0), from the first of 1 + (onset - 1)
   // 2^-k (k = 1, 2, ...) with a negative clamp residual (a longer side, its top nearer the
   // clamp); the candidate before it caps the bracket.
   template <class Residual>
@@ -1266,8 +1267,10 @@ class SphereTippedContact {
         plan.cap = cap;
         plan.g_cap = g_cap;
         plan.no_root_message =
-            "filleted flat-punch shooting (side with friction) found no face stretch meeting "
-            "the clamp condition";
+            s_.face > 0.0 ? "filleted flat-punch shooting (side with friction) found no face "
+                            "stretch meeting the clamp condition"
+                          : "sphere-tipped shooting (side with friction) found no pole stretch "
+                            "meeting the clamp condition";
         return plan;
       }
       if (g) {
@@ -1276,9 +1279,10 @@ class SphereTippedContact {
       }
     }
     plan.status = Status::NoConvergence;
-    plan.message =
-        "filleted flat-punch shooting (side with friction): no face stretch with a "
-        "negative clamp residual";
+    plan.message = s_.face > 0.0 ? "filleted flat-punch shooting (side with friction): no face "
+                                   "stretch with a negative clamp residual"
+                                 : "sphere-tipped shooting (side with friction): no pole stretch "
+                                   "with a negative clamp residual";
     return plan;
   }
 
