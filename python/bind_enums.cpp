@@ -75,6 +75,10 @@ void bind_enums(py::module_& m) {
              StickRule::EdgeTension,
              "held until the radial line tension at the edge reaches the threshold [N/mm]")
       .value("Always", StickRule::Always, "never slides")
+      .value("Coulomb",
+             StickRule::Coulomb,
+             "curved probes: held while the friction (mu times the contact pressure) holds "
+             "every held point")
       .def_property_readonly("token", [](StickRule r) { return to_string(r); });
 
   py::enum_<PartTwoEquation>(m, "PartTwoEquation", "Equilibrium equation of Part II")

@@ -30,12 +30,13 @@ PartTwoEquation part_two_equation_of(const std::variant<PartTwoEquation, std::st
       text));
 }
 
-// The CLI's --stick forms: none | always | force:<N> | depth:<mm> | edge-tension:<N/mm>.
+// The CLI's --stick forms: none | always | coulomb | force:<N> | depth:<mm> | edge-tension:<N/mm>.
 StickCriterion stick_of(const std::variant<StickCriterion, std::string>& v) {
   if (const auto* s = std::get_if<StickCriterion>(&v)) return *s;
   const auto& text = std::get<std::string>(v);
   if (text == "none") return {StickRule::None, 0.0};
   if (text == "always") return {StickRule::Always, 0.0};
+  if (text == "coulomb") return {StickRule::Coulomb, 0.0};
   const auto colon = text.find(':');
   const auto rule = text.substr(0, colon);
   const auto value = colon == std::string::npos ? std::string() : text.substr(colon + 1);
@@ -55,7 +56,8 @@ StickCriterion stick_of(const std::variant<StickCriterion, std::string>& v) {
   }
   if (s.rule == StickRule::None || !number)
     throw py::value_error(fmt::format(
-        "stick: expected none, always, force:<N>, depth:<mm> or edge-tension:<N/mm>, got '{}'",
+        "stick: expected none, always, force:<N>, depth:<mm>, edge-tension:<N/mm> or coulomb, "
+        "got '{}'",
         text));
   return s;
 }
@@ -117,7 +119,7 @@ std::string material_repr(const Material& m) {
 }
 
 std::string stick_repr(const StickCriterion& s) {
-  if (s.rule == StickRule::None || s.rule == StickRule::Always)
+  if (s.rule == StickRule::None || s.rule == StickRule::Always || s.rule == StickRule::Coulomb)
     return fmt::format("StickCriterion('{}')", to_string(s.rule));
   return fmt::format("StickCriterion('{}:{:g}')", to_string(s.rule), s.threshold);
 }
@@ -293,8 +295,8 @@ void bind_problem(py::module_& m) {
   py::class_<SphereTipped> sphere_tipped(
       m,
       "SphereTipped",
-      "A cylinder ending in a hemisphere of the same radius (sliding only, stick rule none;\n"
-      "Coulomb slip on the hemisphere and the cylinder side)");
+      "A cylinder ending in a hemisphere of the same radius (held where it touched with a stick\n"
+      "rule, no gas pressure; sliding with Coulomb slip on the hemisphere and the cylinder side)");
   sphere_tipped
       .def(py::init([](double radius_mm) { return SphereTipped{radius_mm}; }),
            py::arg("radius_mm") = SphereTipped{}.radius_mm)
@@ -531,7 +533,7 @@ void bind_problem(py::module_& m) {
       m,
       "StickCriterion",
       "When the membrane, held at the indenter's edge at first, starts to slide.  Also given as\n"
-      "the CLI's --stick text: 'none', 'always', 'force:<N>', 'depth:<mm>', "
+      "the CLI's --stick text: 'none', 'always', 'coulomb', 'force:<N>', 'depth:<mm>', "
       "'edge-tension:<N/mm>'.");
   stick
       .def(py::init([](StickRule rule, double threshold) {
@@ -547,6 +549,10 @@ void bind_problem(py::module_& m) {
       .def_static("always",
                   [] {
                     return StickCriterion{StickRule::Always, 0.0};
+                  })
+      .def_static("coulomb",
+                  [] {
+                    return StickCriterion{StickRule::Coulomb, 0.0};
                   })
       .def_static(
           "force",

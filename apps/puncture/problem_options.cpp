@@ -182,9 +182,10 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "Probe shape: flat (the paper's flat-ended cylinder, its corner\n"
                      "sharp or rounded by --fillet-radius),\n"
                      "sphere-tipped (a cylinder ending in a hemisphere of the same radius;\n"
-                     "sliding only, --stick none; Coulomb slip on the hemisphere and the\n"
-                     "cylinder side), ball (a sphere of radius --ball-radius on a\n"
-                     "rod of radius --indenter-radius; solved up to the ball's equator) or\n"
+                     "held (--stick, no gas pressure) or sliding, with Coulomb slip on the\n"
+                     "hemisphere and the cylinder side), ball (a sphere of radius\n"
+                     "--ball-radius on a rod of radius --indenter-radius; solved up to the\n"
+                     "ball's equator) or\n"
                      "cone (half-angle --cone-half-angle, spherical tip of radius\n"
                      "--tip-radius tangent to it, shank of radius --indenter-radius;\n"
                      "sliding only, solved until the contact reaches the shank)")
@@ -406,7 +407,11 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                  "                the indenter's edge reaches <N/mm> [N/mm] (with\n"
                  "                --prestretch: beyond the pre-tension)\n"
                  "  always        never slides (fully stuck)\n"
-                 "Thresholds must be > 0, e.g. --stick force:0.5")
+                 "  coulomb       sphere-tipped probe: held where it touched while\n"
+                 "                --friction times the contact pressure holds every\n"
+                 "                held point (tangential traction [MPa] <= mu p)\n"
+                 "On the sphere-tipped probe each material point is held where it\n"
+                 "touched the sphere.  Thresholds must be > 0, e.g. --stick force:0.5")
       ->group(kContact)
       ->capture_default_str();
   app.add_option("--part-two-equation",

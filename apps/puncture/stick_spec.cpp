@@ -22,6 +22,7 @@ std::optional<double> parse_number(std::string_view text) {
 std::optional<StickCriterion> parse_stick(std::string_view text) {
   if (text == "none") return StickCriterion{StickRule::None, 0.0};
   if (text == "always") return StickCriterion{StickRule::Always, 0.0};
+  if (text == "coulomb") return StickCriterion{StickRule::Coulomb, 0.0};
   const auto colon = text.find(':');
   if (colon == std::string_view::npos) return std::nullopt;
   const auto name = text.substr(0, colon);
@@ -49,6 +50,7 @@ std::string_view threshold_unit(StickRule rule) {
       return "N/mm";
     case StickRule::None:
     case StickRule::Always:
+    case StickRule::Coulomb:
       return "";
   }
   return "";

@@ -10,10 +10,10 @@ namespace puncture::cli {
 
 // The accepted forms, for help and error messages.
 inline constexpr std::string_view kStickForms =
-    "none, always, force:<N>, depth:<mm> or edge-tension:<N/mm>";
+    "none, always, force:<N>, depth:<mm>, edge-tension:<N/mm> or coulomb";
 
-// Parses none | always | force:<N> | depth:<mm> | edge-tension:<N/mm>; empty when malformed.
-// The threshold's range (finite, > 0) is checked by the library's validation_errors().
+// Parses none | always | coulomb | force:<N> | depth:<mm> | edge-tension:<N/mm>; empty when
+// malformed. The threshold's range (finite, > 0) is checked by the library's validation_errors().
 std::optional<StickCriterion> parse_stick(std::string_view text);
 
 // Unit of the rule's threshold: "N", "mm", "N/mm", or "" for none / always.

@@ -18,8 +18,8 @@ struct FlatPunch {
 
 // A cylinder of radius a ending in a hemisphere of the same radius (the ASTM F1306 probe has
 // a = 1.6 mm): the membrane lies on the hemisphere from the pole to the contact edge and leaves it
-// tangentially.  Sliding only; with friction only while the contact stays on the hemisphere, for
-// now (docs/model.md, §15).
+// tangentially.  Sliding (frictionless, or Coulomb slip on the hemisphere and the cylinder side),
+// or first held where it touched with a stick rule (docs/model.md, §15, §15.4).
 struct SphereTipped {
   double radius_mm = 2.0;  // hemisphere and cylinder radius a [mm]
 };

@@ -49,6 +49,8 @@ enum class StickRule {
                 // `threshold` [N/mm], the adhesive strength of the edge (pre-stretched: the
                 // tension beyond the pre-tension, which the membrane under the tip carries)
   Always,       // never slides (fully stuck, the infinite-friction limit)
+  Coulomb,      // curved probes: held while every held point's tangential traction is within
+                // `friction` times its contact pressure (docs/model.md §15.4); no threshold
 };
 
 struct StickCriterion {

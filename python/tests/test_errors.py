@@ -35,9 +35,13 @@ INVALID = [
     ({"friction": 11}, ["--friction", "11"], ["friction"]),
     ({"critical_i1": 128}, ["--critical-i1", "128"], ["critical_i1"]),
     ({"stick": "force:-1"}, ["--stick", "force:-1"], ["stick.threshold"]),
-    # the sphere-tipped probe is sliding only, for now
-    ({"indenter": pu.SphereTipped(), "friction": 0, "stick": "always"},
-     ["--indenter", "sphere-tipped", "--friction", "0", "--stick", "always"], ["stick.rule"]),
+    # the sphere-tipped probe is held without a gas pressure only, for now
+    ({"indenter": pu.SphereTipped(), "friction": 0, "stick": "always",
+      "preload": pu.Preload(pressure_mpa=0.005)},
+     ["--indenter", "sphere-tipped", "--friction", "0", "--stick", "always", "--pressure",
+      "0.005"], ["stick.rule"]),
+    # Coulomb friction cannot hold the membrane on the flat punch
+    ({"stick": "coulomb"}, ["--stick", "coulomb"], ["stick.rule"]),
     ({"indenter": pu.Ball(2.0, 2.0), "friction": 0},
      ["--indenter", "ball", "--ball-radius", "2", "--friction", "0"], ["indenter.ball_radius_mm"]),
     ({"indenter": pu.Cone(2.0, 90.0, 0.5), "friction": 0},

@@ -35,6 +35,9 @@ std::string switch_text(const LoadingCurve& c, const Problem& p) {
                        num(c.stick_slip.force_sliding_n));
   if (p.stick.rule == StickRule::None) return "none: slides from the first touch";
   if (p.stick.rule == StickRule::Always) return "none: held throughout";
+  if (p.stick.rule == StickRule::Coulomb && !c.points.empty() &&
+      c.points.back().stage == Stage::Slip)
+    return "none: friction cannot hold the first material touched; slides from the first touch";
   if (c.puncture.ok() && c.puncture.at_switch && c.puncture.stage == Stage::Stick)
     return fmt::format(
         "at depth {} mm, force {} N (held): the membrane punctures as it starts "

@@ -403,16 +403,21 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
                                     to_string(p.stick.rule))});
   }
   const auto& s = p.stick;
-  // The sphere-tipped probe is solved sliding only (docs/model.md, §15): a stick stage is
-  // refused rather than answered as sliding.
-  if (std::holds_alternative<SphereTipped>(p.indenter)) {
-    if (s.rule != StickRule::None)
-      errors.push_back({"stick.rule",
-                        fmt::format("the stick stage on the sphere-tipped probe is not implemented "
-                                    "yet: stick rule must be 'none', got '{}'",
-                                    to_string(s.rule))});
-  }
+  // The sphere-tipped probe's stick stage (docs/model.md §15.4) holds material where it touched
+  // the flat membrane: under a gas pressure it would touch the inflated dome, not solved.
+  if (std::holds_alternative<SphereTipped>(p.indenter) && s.rule != StickRule::None &&
+      (p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3))
+    errors.push_back({"stick.rule",
+                      fmt::format("under a gas pressure the sphere-tipped probe is solved sliding "
+                                  "only so far: stick rule must be 'none', got '{}'",
+                                  to_string(s.rule))});
   detail::append_probe_shape_errors(errors, p);
+  // On the flat punch Coulomb friction cannot hold the membrane at all (docs/model.md §9).
+  if (s.rule == StickRule::Coulomb && std::holds_alternative<FlatPunch>(p.indenter) &&
+      std::get<FlatPunch>(p.indenter).fillet_radius_mm == 0.0)
+    errors.push_back({"stick.rule",
+                      "stick rule 'coulomb' needs a curved probe (sphere-tipped): on the flat "
+                      "punch Coulomb friction cannot hold the membrane under the tip, use 'none'"});
   if (s.rule == StickRule::Force || s.rule == StickRule::Depth ||
       s.rule == StickRule::EdgeTension) {
     if (!std::isfinite(s.threshold) || s.threshold <= 0.0)
@@ -464,6 +469,8 @@ std::string to_string(StickRule rule) {
       return "edge-tension";
     case StickRule::Always:
       return "always";
+    case StickRule::Coulomb:
+      return "coulomb";
   }
   return "?";
 }
@@ -474,6 +481,8 @@ std::string describe(const StickCriterion& stick) {
       return "none (Coulomb friction only: slides from the first touch)";
     case StickRule::Always:
       return "always (held at the edge, never slides)";
+    case StickRule::Coulomb:
+      return "coulomb (held where it touched while the friction holds every held point)";
     case StickRule::Force:
       return fmt::format(
           "force:{:g} (held until the force reaches {:g} N)", stick.threshold, stick.threshold);

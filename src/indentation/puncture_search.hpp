@@ -57,6 +57,10 @@ inline std::string largest_measure(const FailureCriterion& criterion) {
   return name.starts_with("largest") ? name : "largest " + name;
 }
 
+// The force (/ force scale) of the first touch, where the Coulomb stick rule asks whether
+// friction holds the first material held: ~1e-5 N on the paper's membrane.
+inline constexpr double kFirstTouchForce = 1e-6;
+
 template <class Shooting>
 SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
   SwitchPoint out;
@@ -82,6 +86,18 @@ SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
     at_switch = shooting.solve(Stage::Stick, p.stick.threshold / scale);
   } else if (p.stick.rule == StickRule::Depth) {
     at_switch = shooting.solve_at_depth(Stage::Stick, p.stick.threshold / big_a);
+  } else if (p.stick.rule == StickRule::Coulomb) {
+    // Held while mu p holds every held point (docs/model.md §15.4); without friction, or when
+    // the first material touched already needs more, the membrane slides from the first touch.
+    auto beyond = [&](const ScaledSolution& s) { return s.held_traction_ratio - p.friction; };
+    const auto first = shooting.solve(Stage::Stick, kFirstTouchForce);
+    if (p.friction == 0.0 || (first.ok() && beyond(first) >= 0.0)) {
+      b.first_stage = Stage::Slip;
+      b.switches = false;
+      return out;
+    }
+    if (const auto f = first_force_where(shooting, Stage::Stick, 0.0, -p.friction, beyond))
+      at_switch = shooting.solve(Stage::Stick, *f);
   } else {  // EdgeTension: s1 H at the edge [N/mm] beyond the pre-tension reaches the threshold
     const double target =
         p.stick.threshold / (p.material.shear_modulus_mpa * p.geometry.thickness_mm);

@@ -50,6 +50,9 @@ struct ScaledSolution {
   double corner_slope = 0.0;
   double tension_ratio = 1.0;  // s1 outside the corner / s1 in Part III
   double edge_s1 = 0.0;        // s1 at the inner end of Part I
+  // Held on a curved probe: the largest |tangential traction| / contact pressure of the held
+  // contact, what Coulomb friction must reach to hold it (StickRule::Coulomb).
+  double held_traction_ratio = 0.0;
   double max_i1 = 3.0;         // largest I1 in Parts I and II
   double max_i1_r = 0.0;       // ... at this reference radius
   double max_i1_radius = 0.0;  // ... and this current radius

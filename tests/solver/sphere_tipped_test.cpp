@@ -287,20 +287,25 @@ TEST(SphereTipped, PunctureAtThePole) {
       in_free);
 }
 
-// What is not implemented is refused, never answered otherwise: a stick rule is a validation
-// error naming the parameter (the contact model's plan says so too); the finite elements hold
-// the membrane at the flat punch's edge only (held on this probe: they throw; they are checked
-// frictionless in tests/verification/finite_element_sphere_test.cpp).  Friction on the cylinder
-// side is solved (sphere_side_friction_test.cpp).
-TEST(SphereTipped, StickIsRefused) {
+// What is not implemented is refused, never answered otherwise: a stick rule under a gas
+// pressure is a validation error naming the parameter (the held stage is solved without,
+// tests/solver/sphere_stick_test.cpp), and a held contact past the equator is a status; the
+// finite elements hold the membrane at the flat punch's edge only (held on this probe: they
+// throw; they are checked frictionless in tests/verification/finite_element_sphere_test.cpp).
+// Friction on the cylinder side is solved (sphere_side_friction_test.cpp).
+TEST(SphereTipped, StickUnderPressureIsRefused) {
   Problem held = sphere_problem();
   held.stick = {StickRule::Always, 0.0};
+  EXPECT_TRUE(validation_errors(held).empty());
+  held.preload.pressure_mpa = 0.005;
   const auto held_errors = validation_errors(held);
   ASSERT_EQ(held_errors.size(), 1u);
   EXPECT_EQ(held_errors.front().parameter, "stick.rule");
   EXPECT_THROW(solve_at_force(held, 0.1, Stage::Stick), InvalidInput);
   const auto shooting = make_shooting(sphere_problem(), SolverOptions{});
-  EXPECT_EQ(shooting.solve(Stage::Stick, 0.05).status, Status::OutsideModel);
+  // Held, this membrane locks before its edge reaches the equator (at 6.2 N, 127 mm).
+  const auto locked = shooting.solve(Stage::Stick, 10.0);
+  EXPECT_EQ(locked.status, Status::BeyondLocking) << locked.message;
 
   EXPECT_THROW(fe_solve_at_depth(sphere_problem(), 5.0, FeContact::Held), InvalidInput);
 }

@@ -15,9 +15,11 @@
 //                       leaves the side (> a / A): the pole stretch is then fixed by the force
 //                       alone, the cap carries f at the equator.  With friction p = the pole
 //                       stretch, the side marched up from the equator (rough_side).
+//   Stick               p = 1 / R_c, R_c the contact edge: each material point held where it
+//                       touched (contact/sphere_stick.hpp); not on the fillet, the cone or under
+//                       a gas pressure.
 // Coulomb slip on the hemisphere and on the cylinder side (the membrane slides away from the
-// pole; friction mu p points to it).  Not implemented: a stick stage (validation_errors refuses
-// the stick rules).
+// pole; friction mu p points to it).
 //
 // The flat punch with a rounded corner (fillet radius rho < a, docs/model.md §19) is the same
 // model with a flat face of radius b = a - rho before the arc (SphereTippedSettings::face): the
@@ -30,6 +32,7 @@
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -37,6 +40,7 @@
 
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
+#include "indentation/contact/sphere_stick.hpp"
 #include "indentation/free_part.hpp"
 #include "indentation/membrane_fields.hpp"
 #include "mechanics/inverse_stretch.hpp"
@@ -185,7 +189,11 @@ class SphereTippedContact {
         side_radius_(cone() ? settings.shank : settings.a),
         end_psi_(cone() ? tangency_ + (settings.shank - settings.a * std::sin(tangency_)) /
                                           (settings.a * std::cos(tangency_))
-                        : kHalfPiCap) {}
+                        : kHalfPiCap),
+        stick_(std::make_shared<SphereStickHistory<Law>>(part_one, settings.a)) {}
+
+  // The stick stage's history (built on first use; shared by copies of the contact).
+  const SphereStickHistory<Law>& stick_history() const { return *stick_; }
 
   // The pole stretch exceeds 1.
   double parameter_floor(Configuration) const { return 1.0; }
@@ -421,6 +429,8 @@ class SphereTippedContact {
       if (s_.mu != 0.0) return std::nullopt;  // the ball and the cone: no side (a status)
       return side_top_start(f, p);
     }
+    if (c == Configuration::Stick)
+      return stick_solved() ? stick_->edge_start(1.0 / p, f) : std::nullopt;
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
     const auto& cap = cap_to_edge(p, f);
     if (!cap) return std::nullopt;
@@ -444,6 +454,11 @@ class SphereTippedContact {
     if (c == Configuration::SlipWithPartTwo)
       return rough_side_solved() ? attach_rough_side(p, record, sol, maxima)
                                  : attach_with_side(st, record, sol, maxima);
+    if (c == Configuration::Stick) {
+      attach_stuck_cap(*stick_, law_, s_.a, st, record, sol);
+      sol.part_three_stretch = part_one_.prestretch();  // the pole holds as it touched
+      return true;
+    }
     // The free start's march (its steps and I1 the same), unless the cap is sampled: then it is
     // marched again in shorter steps.
     std::optional<CapEnd> end;
@@ -490,6 +505,7 @@ class SphereTippedContact {
   ShootingPlan plan(Stage stage, double f, Residual&& counted) const {
     ShootingPlan plan;
     plan.configuration = Configuration::SlipWithoutPartTwo;
+    if (stage == Stage::Stick && stick_solved()) return stuck_plan(*stick_, f, counted);
     if (stage == Stage::Stick) {
       plan.configuration = Configuration::Stick;
       plan.status = Status::OutsideModel;
@@ -711,6 +727,7 @@ class SphereTippedContact {
                              MembraneFields& m) const {
     const double big_a = u.clamp_radius_mm, g = u.shear_modulus_mpa;
     const double depth = sol.depth * big_a;
+    const bool stuck = sol.configuration == Configuration::Stick;
     for (const auto& sample : sol.part_two) {
       const double r_ref = sample[0], l1 = sample[1], psi = sample[2];
       const bool side = !cone() && psi > kHalfPiCap;
@@ -736,7 +753,9 @@ class SphereTippedContact {
                    st,
                    g,
                    pressure,
-                   s_.mu * pressure);
+                   // Held: the tangential traction the probe supplies (towards the pole).
+                   stuck ? stick_->traction_near(r_ref).tangential * g * u.thickness_mm / big_a
+                         : s_.mu * pressure);
     }
   }
 
@@ -938,6 +957,10 @@ class SphereTippedContact {
   static constexpr double kEndResidualMargin = 1e-5;
 
   bool cone() const { return s_.beyond == BeyondTipSphere::Cone; }
+  // The stick stage is solved on the sphere-tipped probe without a gas pressure.
+  bool stick_solved() const {
+    return s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide && pressure_ == 0.0;
+  }
 
   // The cap's system, with the cone past the tangency for the cone probe (by position, or the
   // sphere's or the cone's equations throughout).
@@ -1294,6 +1317,7 @@ class SphereTippedContact {
   double tangency_;     // polar angle where the tip sphere ends: pi/2, or the cone's tangency
   double side_radius_;  // radius where the curved profile ends: the cylinder's a, the shank's
   double end_psi_;      // the profile coordinate there (pi/2: the equator; the cone's kink)
+  std::shared_ptr<SphereStickHistory<Law>> stick_;  // the stick stage's contact map
   // The last equator onset found and the force it carries: the answer when that force is asked
   // again, and the warm start for the next (one solve runs single-threaded on its own contact
   // model, whose settings never change).
