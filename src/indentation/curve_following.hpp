@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "indentation/depth_newton.hpp"
@@ -47,6 +48,22 @@ struct Predictor {
     return {std::exp(out[0]), floor + std::exp(out[1])};
   }
 };
+
+// On a contact model whose depth is noisy near zero load (kNoisyNearZeroLoad), a curve point
+// whose Newton steps stall at the evaluations' noise (in solve_at_depth's newton_at_depth,
+// DepthNewton::guarded) is accepted if its residuals are within this many times the tolerance:
+// on the sphere-tipped probe the noise is ~1e-8 (bench/README.md), where the force search that
+// took over before also ended on the noise (it accepts a depth within 1e-5, kDepthMatch).
+inline constexpr double kNoiseLimitedResidual = 100.0;
+
+// Whether a contact model's depth is noisy near zero load (contact_model.hpp).
+template <class Contact>
+constexpr bool noisy_near_zero_load() {
+  if constexpr (requires { Contact::kNoisyNearZeroLoad; })
+    return Contact::kNoisyNearZeroLoad;
+  else
+    return false;
+}
 
 // Fills out.points along the depth grid; false (with out.status/message) on failure.
 // `change`: where the sliding configuration changes (the contact model's slip_change), if it does.
@@ -119,7 +136,10 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     if (!sol) {
       newton.reset();
       const double f_guess = predictor.history.empty() ? 0.0 : predictor.history.back()[1];
-      sol = shooting.solve_at_depth(stage, d, f_guess);
+      using Contact = std::decay_t<decltype(contact)>;
+      const double noise_tol =
+          noisy_near_zero_load<Contact>() ? kNoiseLimitedResidual * curve_tol : 0.0;
+      sol = shooting.solve_at_depth(stage, d, f_guess, noise_tol);
     }
     if (!sol->ok()) {
       out.status = sol->status;

@@ -253,9 +253,12 @@ class IndentationShooting {
   // The equilibrium at normalised depth d in `stage`: by Newton in depth control from a nearby
   // force solve (newton_at_depth), or, where that fails, with the force bracketed from zero (a
   // search over solve(); the loading curve's own DepthNewton falls back on this too).
-  ScaledSolution solve_at_depth(Stage stage, double d, double f_guess = 0.0) const {
+  // `noise_tol` > 0 (the loading curve's): newton_at_depth may end on a state whose residuals
+  // are the evaluations' noise, within noise_tol (DepthNewton::guarded).
+  ScaledSolution solve_at_depth(Stage stage, double d, double f_guess = 0.0,
+                                double noise_tol = 0.0) const {
     if (d == 0.0) return solve(stage, 0.0);
-    if (auto fast = newton_at_depth(stage, d, f_guess)) return std::move(*fast);
+    if (auto fast = newton_at_depth(stage, d, f_guess, noise_tol)) return std::move(*fast);
     ScaledSolution last_failure;
     std::optional<ScaledSolution> deepest;  // the deepest state short of d the search met
     auto keep_if_deepest = [&](const ScaledSolution& sol) {
@@ -340,7 +343,10 @@ class IndentationShooting {
   // Newton starts from that state carried to d by the last local powers of f and p - p0 (near
   // zero load f ~ d^3, p - p0 ~ d^2).  The configuration is confirmed by the contact's plan at
   // the force found.  Empty when a step fails: the force search of solve_at_depth runs then.
-  std::optional<ScaledSolution> newton_at_depth(Stage stage, double d, double f_guess) const {
+  // With `noise_tol` > 0 Newton is guarded (DepthNewton::guarded) and the depth may miss d by
+  // that much (relative), the noise it ends on.
+  std::optional<ScaledSolution> newton_at_depth(Stage stage, double d, double f_guess,
+                                                double noise_tol = 0.0) const {
     ScaledSolution near = solve(stage, f_guess > 0.0 ? f_guess : d * d * d, false, true);
     const auto usable = [](const ScaledSolution& x) {
       return x.integrated && std::abs(x.residual) <= kRoughResidual && x.depth > 0.0;
@@ -371,8 +377,10 @@ class IndentationShooting {
     if (!(p > floor)) return std::nullopt;
     DepthNewton<IndentationShooting> newton(*this, settings().shooting_tol);
     newton.without_maxima(false);  // the state found is assembled again below
+    if (noise_tol > 0.0) newton.guarded(noise_tol);
     const auto found = newton.solve(c, d, near.f * std::pow(ratio, power(kFirstPower, force)), p);
-    if (!found || !(std::abs(found->depth - d) <= kDepthPolish * d)) return std::nullopt;
+    const double depth_tol = std::max(kDepthPolish, noise_tol);
+    if (!found || !(std::abs(found->depth - d) <= depth_tol * d)) return std::nullopt;
     auto residual_at = [&](Configuration cc, double q) { return residual(cc, found->f, q); };
     if (contact_.plan(stage, found->f, residual_at).configuration != c) return std::nullopt;
     // The same integration with the fields sampled: the same state.

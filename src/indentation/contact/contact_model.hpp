@@ -15,6 +15,10 @@
 //                                            the parts in contact, after Part I was integrated:
 //                                            their stretches, height and largest I1; false (with
 //                                            status and message set) when they cannot be solved
+//   optional: static constexpr bool kNoisyNearZeroLoad
+//                                            the depth carries rounding noise beyond the curve's
+//                                            tolerance near zero load: the curve's points may
+//                                            end on it (follow_curve, kNoiseLimitedResidual)
 //   optional, for depth control near a limit load (depth_newton.hpp); without them depth control
 //   works on (f, p) alone:
 //   bool contact_controls(Configuration)     whether contact_start gives that configuration
