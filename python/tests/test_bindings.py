@@ -404,6 +404,19 @@ def test_inflated_state_is_a_keyword_validated_like_the_cli(cli):
         pu.solve_at_depth(beyond, 1.0)
 
 
+def test_finite_elements_under_pressure_start_from_their_dome():
+    problem = pu.Problem(indenter=pu.SphereTipped(2.0), friction=0.0,
+                         preload=pu.Preload(pressure_mpa=3e-4))
+    dome = pu.fe_inflated_state(problem, elements=64)
+    inflated = pu.inflate_at_pressure(pu.InflationProblem.of(problem), 3e-4).states[0]
+    assert dome.ok and dome.part_three_stretch == pytest.approx(inflated.pole_stretch, rel=5e-5)
+    assert dome.volume_mm3 == pytest.approx(inflated.volume_mm3, rel=1e-8)
+    [fe] = pu.fe_solve_at_depths(problem, [5.0], elements=64)
+    assert fe.ok and fe.force_n == pytest.approx(pu.solve_at_depth(problem, 5.0).force_n, rel=1e-6)
+    with pytest.raises(ValueError, match="pressure"):
+        pu.fe_inflated_state(pu.Problem())
+
+
 def test_sealed_chamber_matches_cli_and_reports_its_gas(cli):
     sealed = pu.Preload(pressure_mpa=3e-4, gas_volume_mm3=2e6)
     assert repr(sealed) == ("Preload(prestretch=1, pressure_mpa=0.0003, gas_volume_mm3=2e+06, "
