@@ -124,9 +124,27 @@ std::string stick_repr(const StickCriterion& s) {
   return fmt::format("StickCriterion('{}:{:g}')", to_string(s.rule), s.threshold);
 }
 
+// Preload::inflated_state from Python: 'first', 'last' or k >= 1 (the library validates k).
+int inflated_state_of(const py::object& value) {
+  if (py::isinstance<py::str>(value)) {
+    const std::string name = value.cast<std::string>();
+    if (name == "first") return 1;
+    if (name == "last") return kLastInflatedState;
+    throw py::value_error("inflated_state: must be 'first', 'last' or a number >= 1, got '" + name +
+                          "'");
+  }
+  if (py::isinstance<py::bool_>(value) || !py::isinstance<py::int_>(value))
+    throw py::value_error("inflated_state: must be 'first', 'last' or a number >= 1");
+  return value.cast<int>();
+}
+
 std::string preload_repr(const Preload& p) {
   std::string out = fmt::format("Preload(prestretch={:g}", p.prestretch);
   if (p.pressure_mpa != 0.0) out += fmt::format(", pressure_mpa={:g}", p.pressure_mpa);
+  if (p.inflated_state != 1)
+    out += p.inflated_state == kLastInflatedState
+               ? std::string(", inflated_state='last'")
+               : fmt::format(", inflated_state={}", p.inflated_state);
   if (p.gas_volume_mm3)
     out += fmt::format(", gas_volume_mm3={:g}, atmospheric_pressure_mpa={:g}",
                        *p.gas_volume_mm3,
@@ -242,10 +260,12 @@ void bind_problem(py::module_& m) {
                        double pressure_mpa,
                        std::optional<double>
                            gas_volume_mm3,
-                       double atmospheric_pressure_mpa) {
+                       double atmospheric_pressure_mpa,
+                       const py::object& inflated_state) {
              Preload p;
              p.prestretch = prestretch;
              p.pressure_mpa = pressure_mpa;
+             p.inflated_state = inflated_state_of(inflated_state);
              p.gas_volume_mm3 = gas_volume_mm3;
              p.atmospheric_pressure_mpa = atmospheric_pressure_mpa;
              return p;
@@ -253,7 +273,8 @@ void bind_problem(py::module_& m) {
            py::arg("prestretch") = Preload{}.prestretch,
            py::arg("pressure_mpa") = Preload{}.pressure_mpa,
            py::arg("gas_volume_mm3") = py::none(),
-           py::arg("atmospheric_pressure_mpa") = Preload{}.atmospheric_pressure_mpa)
+           py::arg("atmospheric_pressure_mpa") = Preload{}.atmospheric_pressure_mpa,
+           py::arg("inflated_state") = "first")
       .def_readwrite("prestretch",
                      &Preload::prestretch,
                      "equibiaxial pre-stretch L0 (>= 1): the stress-free disc of radius A / L0 "
@@ -262,6 +283,17 @@ void bind_problem(py::module_& m) {
                      &Preload::pressure_mpa,
                      "gas pressure p under the membrane [MPa] (>= 0), held: inflated first, then "
                      "indented at its pole; depths from the inflated pole (sphere-tipped probe)")
+      .def_property(
+          "inflated_state",
+          [](const Preload& p) -> py::object {
+            if (p.inflated_state == kLastInflatedState) return py::str("last");
+            if (p.inflated_state == 1) return py::str("first");
+            return py::int_(p.inflated_state);
+          },
+          [](Preload& p, const py::object& value) { p.inflated_state = inflated_state_of(value); },
+          "which inflated state at pressure_mpa is indented where there are several: 'first' "
+          "(reached by inflating slowly from flat), 'last' (the stiffest) or k >= 1, the k-th in "
+          "order of pole stretch")
       .def_readwrite("gas_volume_mm3",
                      &Preload::gas_volume_mm3,
                      "a sealed chamber instead of a held pressure: V0, the gas volume under the "

@@ -61,6 +61,10 @@ void bind_verification(py::module_& m) {
       .def_readonly("force_n", &FeState::force_n)
       .def_readonly("normalized_force", &FeState::normalized_force)
       .def_readonly("stored_energy_nmm", &FeState::stored_energy_nmm, "elastic energy [N mm]")
+      .def_readonly("volume_mm3",
+                    &FeState::volume_mm3,
+                    "under a gas pressure: the volume between the membrane and its clamp plane "
+                    "[mm^3] (U - p V is the energy minimised); 0 without")
       .def_readonly("part_two", &FeState::part_two, "the membrane wraps the indenter's side")
       .def_readonly("part_three_stretch", &FeState::part_three_stretch)
       .def_readonly("corner_reference_radius_mm", &FeState::corner_reference_radius_mm)
@@ -109,9 +113,30 @@ void bind_verification(py::module_& m) {
       py::arg("elements") = 64,
       py::arg("order") = 2,
       "The second method: finite elements minimising the stored energy at increasing depths\n"
-      "[mm], by continuation from the flat membrane.  Frictionless or held contact only\n"
+      "[mm], by continuation from the flat membrane (under a gas pressure: U - p V from the\n"
+      "elements' own inflated dome, frictionless).  Frictionless or held contact only\n"
       "(problem.friction and problem.stick are not used).  A list of FeState; one that did not\n"
       "converge says why in .message.");
+
+  m.def(
+      "fe_inflated_state",
+      [](const Problem& problem, int elements, int order) {
+        check_problem(problem);
+        FeOptions options;
+        options.elements = elements;
+        options.order = order;
+        try {
+          py::gil_scoped_release release;
+          return fe_inflated_state(problem, options);
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(e.what());
+        }
+      },
+      py::arg("problem"),
+      py::arg("elements") = 64,
+      py::arg("order") = 2,
+      "Under a gas pressure: the elements' inflated membrane before contact (U - p V\n"
+      "minimised, depth 0), the start of fe_solve_at_depths.  An FeState.");
 
   py::class_<VerificationCheck>(m, "VerificationCheck", "One row of `puncture verify`")
       .def_readonly("group", &VerificationCheck::group)

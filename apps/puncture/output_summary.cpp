@@ -79,7 +79,19 @@ std::string summary_text(const StateReport& r) {
 std::string summary_text(const VerifyReport& r) {
   const VerificationReport& v = r.verification;
   std::string out = full_report(r.problem);
-  if (std::holds_alternative<SphereTipped>(r.problem.indenter))
+  if (r.problem.preload.pressure_mpa > 0.0)
+    out += fmt::format(
+        "Verification: the shooting solver against independent methods\n"
+        "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
+        "  for their own error), minimising U - p V from their own inflated dome at mu' = 0,\n"
+        "  the membrane lying on the probe's profile (a flat punch: face, corner, side) up to\n"
+        "  a contact edge the method finds.  Under pressure there is no stick stage and no\n"
+        "  small-deflection (Foppl) check: the elements' dome against the shooting's instead;\n"
+        "  friction (mu' = {} here) is checked by the test suite's Coulomb identities.\n",
+        v.elements,
+        v.elements / 2,
+        num(r.problem.friction, "friction"));
+  else if (std::holds_alternative<SphereTipped>(r.problem.indenter))
     out += fmt::format(
         "Verification: the shooting solver against independent methods\n"
         "  second method: finite elements, {} quadratic elements along the free part (and {}\n"

@@ -12,7 +12,7 @@ namespace puncture::cli {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 38> kFlagOfParameter{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 39> kFlagOfParameter{{
     {"geometry.clamp_radius_mm", "--clamp-radius"},
     {"indenter.radius_mm", "--indenter-radius"},
     {"indenter.fillet_radius_mm", "--fillet-radius"},
@@ -22,6 +22,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 38> kFlagOfP
     {"geometry.thickness_mm", "--thickness"},
     {"preload.prestretch", "--prestretch"},
     {"preload.pressure_mpa", "--pressure"},
+    {"preload.inflated_state", "--inflated-state"},
     {"preload.gas_volume_mm3", "--gas-volume"},
     {"preload.atmospheric_pressure_mpa", "--atmospheric-pressure"},
     {"clamp_radius_mm", "--clamp-radius"},

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -243,11 +244,22 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
       app.add_option("--pressure",
                      f.pressure_mpa,
                      "Gas pressure p under the membrane [MPa] (>= 0), held constant: the\n"
-                     "membrane is inflated by p first (its first inflated state), then\n"
+                     "membrane is inflated by p first (its first inflated state, or the\n"
+                     "one --inflated-state chooses), then\n"
                      "indented at its pole from the convex side; depths are measured from\n"
                      "the inflated pole.  The flat punch takes it frictionless and\n"
                      "sliding (--friction 0, --stick none) so far.  (After 'inflate',\n"
                      "--pressure is that command's own: the states at p.)")
+          ->group(kGeometry)
+          ->capture_default_str();
+  f.inflated_state_option =
+      app.add_option("--inflated-state",
+                     f.inflated_state,
+                     "Which inflated state at --pressure is indented where the membrane has\n"
+                     "several (a Gent membrane past its limit point stiffens again):\n"
+                     "'first' (reached by inflating slowly from flat), 'last' (the\n"
+                     "stiffest) or k >= 1, the k-th in order of pole stretch ('puncture\n"
+                     "inflate --pressure P' lists them)")
           ->group(kGeometry)
           ->capture_default_str();
   f.gas_volume_option =
@@ -484,6 +496,25 @@ Problem problem_of(const ProblemFlags& f, std::vector<std::string>& errors) {
   p.geometry.thickness_mm = f.thickness_mm;
   p.preload.prestretch = f.prestretch;
   p.preload.pressure_mpa = f.pressure_mpa;
+  if (f.inflated_state == "first") {
+    p.preload.inflated_state = 1;
+  } else if (f.inflated_state == "last") {
+    p.preload.inflated_state = kLastInflatedState;
+  } else {
+    int k = 0;
+    std::size_t used = 0;
+    try {
+      k = std::stoi(f.inflated_state, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != f.inflated_state.size() || k < 1)
+      errors.push_back(
+          fmt::format("--inflated-state: must be 'first', 'last' or a number >= 1, got '{}'",
+                      f.inflated_state));
+    else
+      p.preload.inflated_state = k;
+  }
   if (given(f.gas_volume_option)) p.preload.gas_volume_mm3 = f.gas_volume_mm3;
   p.preload.atmospheric_pressure_mpa = f.atmospheric_pressure_mpa;
   if (given(f.atmospheric_pressure_option) && !given(f.gas_volume_option))
@@ -566,6 +597,10 @@ InflationProblem make_inflation_problem(const ProblemFlags& f) {
     if (given(o))
       errors.push_back(o->get_name() +
                        ": the sealed chamber is an indentation's; 'inflate' holds the pressure");
+  if (given(f.inflated_state_option))
+    errors.push_back(
+        "--inflated-state: chooses the inflated state an indentation starts from; 'inflate "
+        "--pressure P' lists every state at P");
   p.clamp_radius_mm = f.clamp_radius_mm;
   p.thickness_mm = f.thickness_mm;
   p.material = material_of(f, errors);

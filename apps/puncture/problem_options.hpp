@@ -29,7 +29,8 @@ struct ProblemFlags {
   double thickness_mm = defaults.geometry.thickness_mm;
   double prestretch = defaults.preload.prestretch;
   double pressure_mpa = defaults.preload.pressure_mpa;
-  double gas_volume_mm3 = 0.0;  // read only when --gas-volume is given
+  std::string inflated_state = "first";  // first, last or k >= 1
+  double gas_volume_mm3 = 0.0;           // read only when --gas-volume is given
   double atmospheric_pressure_mpa = defaults.preload.atmospheric_pressure_mpa;
   double shear_modulus_mpa = defaults.material.shear_modulus_mpa;
   std::string material = "gent";
@@ -65,6 +66,7 @@ struct ProblemFlags {
   CLI::Option* gent_gent_beta_option = nullptr;
   CLI::Option* prestretch_option = nullptr;
   CLI::Option* pressure_option = nullptr;
+  CLI::Option* inflated_state_option = nullptr;
   CLI::Option* gas_volume_option = nullptr;
   CLI::Option* atmospheric_pressure_option = nullptr;
   CLI::Option* critical_i1_option = nullptr;

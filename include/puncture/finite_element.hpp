@@ -56,7 +56,10 @@ struct FeState : Outcome {
   double force_n = 0.0;            // indenter force F = dU/d(depth), the reaction [N]
   double normalized_force = 0.0;   // F / (2 pi G H A)
   double stored_energy_nmm = 0.0;  // elastic energy U [N mm]
-  bool part_two = false;           // the membrane wraps the indenter's (cylinder) side
+  // Under a gas pressure p: the volume V between the membrane and its clamp plane [mm^3] (> 0
+  // above it), so that Pi = U - p V is the energy minimised and dPi/d(depth) = F.  0 without.
+  double volume_mm3 = 0.0;
+  bool part_two = false;  // the membrane wraps the indenter's (cylinder) side
   // Flat punch: a / R at the corner (1 when held).  Smooth probe: the pole's equibiaxial stretch.
   double part_three_stretch = 1.0;
   // R at the corner (edge of Part III); on the sphere-tipped probe, where the contact leaves the
@@ -75,12 +78,22 @@ struct FeState : Outcome {
 };
 
 // States at the given depths [mm] (increasing, > 0), each reached by continuation in depth from
-// the flat membrane.  Throws std::invalid_argument for an invalid problem, depths or options.
+// the flat membrane, or under a gas pressure (frictionless only) from the elements' own inflated
+// dome, minimising U - p V, depths counted from its pole (docs/model.md §17.2).  Throws
+// std::invalid_argument for an invalid problem, depths or options.
 std::vector<FeState> fe_solve_at_depths(const Problem& problem,
                                         const std::vector<double>& depths_mm, FeContact contact,
                                         const FeOptions& options = {});
 FeState fe_solve_at_depth(const Problem& problem, double depth_mm, FeContact contact,
                           const FeOptions& options = {});
+
+// Under a gas pressure (Problem::preload.pressure_mpa > 0): the elements' inflated membrane before
+// contact, the minimum of U - p V from which fe_solve_at_depths starts (depth 0, no force; the
+// pole stretch as part_three_stretch, the pole's height above the clamp as -deflection_mm at
+// the first node), on `options.elements` elements linear in R.  A pressure the membrane cannot
+// hold (it bursts, snaps through or overhangs its clamp) is the state's status.  Throws
+// std::invalid_argument for an invalid problem or options, or without a pressure.
+FeState fe_inflated_state(const Problem& problem, const FeOptions& options = {});
 
 // I1 of the finite-element solution at reference radius R [mm] inside the given part (1, 2 or
 // 3); empty when the state has no such part or R is outside it.

@@ -18,6 +18,9 @@ struct Geometry {
   double thickness_mm = 0.2;      // undeformed membrane thickness, H [mm]
 };
 
+// Preload::inflated_state: the last of the inflated states at the pressure.
+inline constexpr int kLastInflatedState = -1;
+
 // How the membrane is loaded before the indenter touches it.
 struct Preload {
   // Equibiaxial pre-stretch L0 (>= 1): the stress-free disc of radius A / L0 is stretched by L0
@@ -28,6 +31,13 @@ struct Preload {
   // inflated by p (the first inflated state, reached by inflating slowly from flat), then
   // indented at its pole from the convex side.  Depths are measured from the inflated pole.
   double pressure_mpa = 0.0;
+  // Which inflated state at pressure_mpa is indented where the membrane has several (a Gent
+  // membrane between the pressure's minimum and its limit point: the curve rises again past its
+  // limit point, docs/model.md §17): 1, the first, reached by inflating slowly from flat
+  // (default); k >= 1 the k-th in order of pole stretch; kLastInflatedState the last, the
+  // stiffest.  Other than 1 it needs pressure_mpa > 0 and no gas_volume_mm3, and k may not
+  // exceed the number of states (validation_errors solves the inflation to count them).
+  int inflated_state = 1;
   // A sealed chamber instead (docs/model.md §17.1): the volume V0 of gas under the flat membrane
   // [mm^3] (> 0), closed at the inflated state of pressure_mpa, so that the amount of gas is
   // fixed and its pressure follows the enclosed volume (isothermal ideal gas).  Empty: the

@@ -255,6 +255,7 @@ from ._puncture import (  # noqa: E402
     VerificationCheck,
     VerificationReport,
     Verdict,
+    fe_inflated_state,
     fe_solve_at_depths,
     verify,
 )
@@ -266,6 +267,7 @@ __all__ += [
     "VerificationCheck",
     "VerificationReport",
     "Verdict",
+    "fe_inflated_state",
     "fe_solve_at_depths",
     "verify",
 ]

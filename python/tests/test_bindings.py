@@ -382,6 +382,41 @@ def test_pressurised_membrane_matches_cli_and_starts_from_the_inflated_dome(cli)
         pu.solve_at_depth(pu.Problem(preload=pu.Preload(pressure_mpa=-1.0)), 1.0)
 
 
+def test_inflated_state_is_a_keyword_validated_like_the_cli(cli):
+    last = pu.Preload(pressure_mpa=3e-4, inflated_state="last")
+    assert last.inflated_state == "last"
+    assert repr(last) == "Preload(prestretch=1, pressure_mpa=0.0003, inflated_state='last')"
+    assert pu.Preload(pressure_mpa=9e-4, inflated_state=2).inflated_state == 2
+    assert pu.Preload().inflated_state == "first"
+    problem = pu.Problem(indenter=pu.SphereTipped(2.0), friction=0.0, preload=last)
+    dome = pu.inflate_at_pressure(pu.InflationProblem.of(problem), 3e-4).states[-1]
+    start = pu.solve_at_depth(problem, 0.0)
+    assert start.ok and start.part_three_stretch == pytest.approx(dome.pole_stretch, rel=1e-12)
+    ours = cli.json("state", "--indenter", "sphere-tipped", "--friction", "0", "--pressure",
+                    "3e-4", "--inflated-state", "last", "--depth", "5")
+    assert pu.solve_at_depth(problem, 5.0).force_n == pytest.approx(ours["state"]["force_n"],
+                                                                     rel=1e-12)
+    with pytest.raises(ValueError, match="inflated_state"):
+        pu.Preload(inflated_state="stiff")
+    beyond = pu.Problem(indenter=pu.SphereTipped(2.0), friction=0.0,
+                        preload=pu.Preload(pressure_mpa=9e-4, inflated_state=4))
+    with pytest.raises(ValueError, match="3 inflated states"):
+        pu.solve_at_depth(beyond, 1.0)
+
+
+def test_finite_elements_under_pressure_start_from_their_dome():
+    problem = pu.Problem(indenter=pu.SphereTipped(2.0), friction=0.0,
+                         preload=pu.Preload(pressure_mpa=3e-4))
+    dome = pu.fe_inflated_state(problem, elements=64)
+    inflated = pu.inflate_at_pressure(pu.InflationProblem.of(problem), 3e-4).states[0]
+    assert dome.ok and dome.part_three_stretch == pytest.approx(inflated.pole_stretch, rel=5e-5)
+    assert dome.volume_mm3 == pytest.approx(inflated.volume_mm3, rel=1e-8)
+    [fe] = pu.fe_solve_at_depths(problem, [5.0], elements=64)
+    assert fe.ok and fe.force_n == pytest.approx(pu.solve_at_depth(problem, 5.0).force_n, rel=1e-6)
+    with pytest.raises(ValueError, match="pressure"):
+        pu.fe_inflated_state(pu.Problem())
+
+
 def test_sealed_chamber_matches_cli_and_reports_its_gas(cli):
     sealed = pu.Preload(pressure_mpa=3e-4, gas_volume_mm3=2e6)
     assert repr(sealed) == ("Preload(prestretch=1, pressure_mpa=0.0003, gas_volume_mm3=2e+06, "

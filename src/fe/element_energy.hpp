@@ -44,6 +44,10 @@ struct ElementPlace {
   double xi0 = 0.0;
   double dxi = 1.0;
   const RigidProfile* profile = nullptr;  // set when the element lies on a probe's profile
+  // Gas pressure under the membrane, P = p (A / L0) / (G H): adds -P V / (2 pi A^3) to the
+  // energy, V the volume between the membrane and the clamp plane.  Zero on a probe's profile,
+  // whose volume depends on the contact edge and the depth only (smooth_probe.cpp adds it).
+  double pressure = 0.0;
 };
 
 // Lagrange shape functions on equally spaced nodes of [-1, 1] and their derivatives.
@@ -124,6 +128,21 @@ bool stretches_at(const ElementPlace& place, const std::array<T, kMaxLocal>& loc
   return l1 > 0.0;
 }
 
+// z r dr/deta at eta, the integrand of -V / (2 pi) (V = 2 pi int y r dr with the height y = -z
+// above the clamp plane): a polynomial of degree 3 order - 1, exact under the Gauss rule below.
+template <class T>
+T volume_integrand(const ElementPlace& place, const std::array<T, kMaxLocal>& local, double eta) {
+  std::array<double, kMaxOrder + 1> n{}, dn{};
+  shape_functions(place.order, eta, n, dn);
+  T r = local[0] * n[0], dr = local[0] * dn[0], z = local[local_z(place.order, 0)] * n[0];
+  for (int i = 1; i <= place.order; ++i) {
+    r += local[local_r(i)] * n[i];
+    dr += local[local_r(i)] * dn[i];
+    z += local[local_z(place.order, i)] * n[i];
+  }
+  return z * r * dr;
+}
+
 // W / G at the stretches, with the derivatives carried through the stretches.
 inline Dual strain_energy(const MaterialLaw& law, const Dual& l1, const Dual& l2, bool& locked) {
   const double a = l1.value().value(), b = l2.value().value();
@@ -176,6 +195,8 @@ inline double element_energy_value(const MaterialLaw& law, const ElementPlace& p
     const double w = strain_energy_density(law, l1, l2);
     if (!std::isfinite(w)) return std::numeric_limits<double>::infinity();
     total += w * weight * w_gauss;
+    if (place.pressure != 0.0)
+      total += place.pressure * volume_integrand(place, values, eta) * w_gauss;
   }
   return total;
 }
@@ -209,6 +230,8 @@ inline ElementResult element_energy(const MaterialLaw& law, const ElementPlace& 
       return result;
     }
     total += w * weight * w_gauss;
+    if (place.pressure != 0.0)
+      total += volume_integrand(place, local, eta) * (place.pressure * w_gauss);
   }
   result.energy = total.value().value();
   result.gradient = total.value().derivatives();

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "fe/energy_newton.hpp"
+#include "fe/inflated_dome_fe.hpp"
 #include "fe/meridian_mesh.hpp"
 #include "fe/part_evaluation.hpp"
 #include "fe/probe_profiles.hpp"
@@ -442,10 +443,11 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
         "the finite elements hold the membrane at the flat punch's edge only (a sharp "
         "corner); on the " +
             describe(problem.indenter) + " they are frictionless");
-  if (problem.preload.pressure_mpa > 0.0)
-    throw InvalidInput(
-        "preload.pressure_mpa",
-        "the finite-element method is not implemented for an inflated membrane (pressure > 0) yet");
+  const bool pressurised = problem.preload.pressure_mpa > 0.0;
+  if (pressurised && contact == FeContact::Held)
+    throw InvalidInput("preload.pressure_mpa",
+                       "under a gas pressure the finite elements are frictionless only (a held "
+                       "edge would need the stick stage's history of the face)");
   if (problem.preload.gas_volume_mm3)
     throw InvalidInput(
         "preload.gas_volume_mm3",
@@ -462,6 +464,12 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
   if (smooth)
     return fe::solve_smooth_probe(
         problem, *fe::smooth_profile(problem.indenter, A), depths_mm, options);
+  if (pressurised)  // the face's contact disc grows on the dome: its edge is searched for
+    return fe::solve_smooth_probe(
+        problem,
+        *fe::sharp_punch_profile(std::get<FlatPunch>(problem.indenter), A),
+        depths_mm,
+        options);
   Scaled s;
   s.a = radius_mm(problem.indenter) / A;
   s.clamp = problem.preload.prestretch;
@@ -513,6 +521,15 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
 FeState fe_solve_at_depth(const Problem& problem, double depth_mm, FeContact contact,
                           const FeOptions& options) {
   return fe_solve_at_depths(problem, {depth_mm}, contact, options).front();
+}
+
+FeState fe_inflated_state(const Problem& problem, const FeOptions& options) {
+  validate(problem);
+  if (!(problem.preload.pressure_mpa > 0.0) || problem.preload.gas_volume_mm3)
+    throw InvalidInput("preload.pressure_mpa",
+                       "the finite elements' inflated state needs a held gas pressure > 0 MPa");
+  check_options(options);
+  return fe::solve_dome(problem, options).state;
 }
 
 std::optional<double> fe_first_invariant(const FeState& state, MembranePart part,

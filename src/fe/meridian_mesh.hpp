@@ -35,6 +35,7 @@ struct MeshPart {
 struct Mesh {
   int order = 2;
   int unknowns = 0;
+  double pressure = 0.0;        // P = p (A / L0) / (G H): the energy minimised is U - p V
   std::vector<MeshPart> parts;  // from the centre outward
 };
 
@@ -56,13 +57,17 @@ inline ElementPlace gather(const Mesh& mesh, const MeshPart& part, int e, const 
   slots[local_start_radius(p)] = &part.start;
   slots[local_end_radius(p)] = &part.end;
   for (int k = 0; k < local_size(p); ++k) values[k] = value_of(*slots[k], x);
-  return ElementPlace{
-      p, part.logarithmic, double(e) / part.elements, 1.0 / part.elements, part.profile};
+  return ElementPlace{p,
+                      part.logarithmic,
+                      double(e) / part.elements,
+                      1.0 / part.elements,
+                      part.profile,
+                      part.profile ? 0.0 : mesh.pressure};
 }
 
 struct Assembly {
   bool admissible = true;
-  double energy = 0.0;       // integral of W / G  R dR over the membrane, lengths / A
+  double energy = 0.0;  // integral of W / G  R dR over the membrane, lengths / A (less P V / 2 pi)
   Eigen::VectorXd gradient;  // with respect to the unknowns
   Eigen::SparseMatrix<double> hessian;
   double reaction = 0.0;  // d energy / d depth: the normalised force F / (2 pi G H A)
@@ -79,6 +84,23 @@ inline double total_energy(const MaterialLaw& law, const Mesh& mesh, const Eigen
       if (!std::isfinite(energy)) return energy;
     }
   return energy;
+}
+
+// The integral of z r dr over the parts off a probe's profile (lengths / A): -V / (2 pi A^3) of
+// their share of the volume between the membrane and the clamp plane, by the elements' Gauss rule
+// (exact: the integrand is a polynomial).
+inline double free_volume_integral(const Mesh& mesh, const Eigen::VectorXd& x) {
+  double sum = 0.0;
+  std::array<double, kMaxLocal> values;
+  std::array<const Slot*, kMaxLocal> slots;
+  for (const MeshPart& part : mesh.parts)
+    if (!part.profile)
+      for (int e = 0; e < part.elements; ++e) {
+        const ElementPlace place = gather(mesh, part, e, x, values, slots);
+        for (const auto& [eta, w_gauss] : gauss_points())
+          sum += volume_integrand(place, values, eta) * w_gauss;
+      }
+  return sum;
 }
 
 inline Assembly assemble(const MaterialLaw& law, const Mesh& mesh, const Eigen::VectorXd& x) {

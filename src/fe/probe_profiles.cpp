@@ -58,6 +58,13 @@ std::unique_ptr<RigidProfile> ball(const Ball& b, double scale) {
 
 }  // namespace
 
+std::unique_ptr<RigidProfile> sharp_punch_profile(const FlatPunch& punch, double scale) {
+  const double a = punch.radius_mm / scale;
+  const std::vector<Piece> pieces{{0.0, 0.0, a, MembranePart::Tip},
+                                  {0.0, kHalfPi, 0.0, MembranePart::Side}};
+  return std::make_unique<PiecewiseProfile>(pieces, std::numeric_limits<double>::infinity(), "");
+}
+
 std::unique_ptr<RigidProfile> smooth_profile(const Indenter& indenter, double scale) {
   if (const auto* sphere = std::get_if<SphereTipped>(&indenter))
     return std::make_unique<SphereTippedProfile>(sphere->radius_mm / scale);

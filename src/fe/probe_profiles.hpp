@@ -14,4 +14,10 @@ namespace puncture::fe {
 // the sharp flat punch.
 std::unique_ptr<RigidProfile> smooth_profile(const Indenter& indenter, double clamp_radius_mm);
 
+// The sharp flat punch as a profile: its face, a convex kink at the corner, its side.  Under a
+// gas pressure the face touches a growing disc of the dome first, whose edge the smooth probes'
+// search finds (where the membrane leaves the face horizontally); past it the edge stays at the
+// kink (the corner), then moves up the side (Part II), as the sharp-corner layouts do.
+std::unique_ptr<RigidProfile> sharp_punch_profile(const FlatPunch& punch, double clamp_radius_mm);
+
 }  // namespace puncture::fe

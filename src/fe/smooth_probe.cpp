@@ -13,16 +13,22 @@
 #include <string>
 
 #include "fe/energy_newton.hpp"
+#include "fe/inflated_dome_fe.hpp"
 #include "fe/meridian_mesh.hpp"
 #include "fe/part_evaluation.hpp"
+#include "indentation/solver_scales.hpp"
 
 namespace puncture::fe {
 namespace {
 
 // Normalised by the stress-free clamp radius A / L0, like the profile.
 struct Scaled {
-  double depth = 0.0;  // indentation depth of the pole
-  double clamp = 1.0;  // current clamp radius: the pre-stretch L0
+  double depth = 0.0;     // indentation depth of the pole
+  double clamp = 1.0;     // current clamp radius: the pre-stretch L0
+  double lift = 0.0;      // under a gas pressure, the inflated dome's height: depths count from it
+  double pressure = 0.0;  // P = p (A / L0) / (G H)
+  // The probe's pole as a deflection below the clamp plane.
+  double tip() const { return depth - lift; }
 };
 
 // A contact segment shorter than this fraction of the edge's arclength is merged into the one
@@ -56,6 +62,7 @@ Mesh build_mesh(const RigidProfile& profile, const Scaled& s, double edge,
                 const FeOptions& options) {
   Mesh mesh;
   mesh.order = options.order;
+  mesh.pressure = s.pressure;
   const int p = options.order;
   const int n_free = options.elements, n_contact = std::max(2, options.elements / 4);
   int next = 0;
@@ -82,7 +89,7 @@ Mesh build_mesh(const RigidProfile& profile, const Scaled& s, double edge,
     free_part.r.push_back(first  ? fixed_slot(profile.radius(edge))
                           : last ? fixed_slot(s.clamp)
                                  : unknown_slot(next++));
-    free_part.z.push_back(first  ? fixed_slot(s.depth - profile.height(edge), true)
+    free_part.z.push_back(first  ? fixed_slot(s.tip() - profile.height(edge), true)
                           : last ? fixed_slot(0.0)
                                  : unknown_slot(next++));
   }
@@ -114,8 +121,8 @@ double arclength_of(const PointFields& f, const RigidProfile& profile, double de
 // `target` on the profile: interpolated between its nodes, contact and free; empty when its
 // membrane does not reach it.
 std::optional<double> radius_at_arclength(const FeState& state, const RigidProfile& profile,
-                                          double target, double A) {
-  const double depth = state.depth_mm / A;
+                                          double target, double A, double lift) {
+  const double depth = state.depth_mm / A - lift;  // the probe's pole below the clamp plane
   double r_prev = 0.0, s_prev = 0.0;
   for (const FePart& part : state.parts)
     for (std::size_t i = 0; i < part.radius_mm.size(); ++i) {
@@ -151,15 +158,15 @@ double edge_arclength_mm(const FeState& state) {
 Eigen::VectorXd starting_guess(const Mesh& mesh, const RigidProfile& profile, const Scaled& s,
                                double edge, const FeState* previous, double A) {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(mesh.unknowns);
-  const double old_depth = previous ? previous->depth_mm / A : 0.0;
-  const double edge_r = profile.radius(edge), edge_z = s.depth - profile.height(edge);
+  const double old_depth = previous ? previous->depth_mm / A - s.lift : 0.0;  // the old tip
+  const double edge_r = profile.radius(edge), edge_z = s.tip() - profile.height(edge);
   // The segments' end radii first: the parts' maps depend on them.
   double last_end = 0.0;
   for (const MeshPart& part : mesh.parts) {
     if (!part.profile) break;
     const double target = part.r.back().value;
     std::optional<double> R =
-        previous ? radius_at_arclength(*previous, profile, target, A) : std::nullopt;
+        previous ? radius_at_arclength(*previous, profile, target, A, s.lift) : std::nullopt;
     double guess = R ? *R : target / s.clamp;
     if (!R && previous)  // beyond the previous membrane's reach: stretch its material map
       guess = previous->part_two_top_reference_radius_mm * target / edge_arclength_mm(*previous);
@@ -196,7 +203,9 @@ Eigen::VectorXd starting_guess(const Mesh& mesh, const RigidProfile& profile, co
         z = old->deflection / A + shift_z * fade;
       }
       if (part.r[i].index >= 0) x[part.r[i].index] = r;
-      if (part.z[i].index >= 0) x[part.z[i].index] = std::min(z, edge_z);
+      // (Without pressure the free part stays above the probe's edge; an inflated one may lie
+      // on either side of it.)
+      if (part.z[i].index >= 0) x[part.z[i].index] = s.pressure > 0.0 ? z : std::min(z, edge_z);
     }
     if (part.profile && !monotone)  // else evenly spaced in arclength
       for (int i = 1; i < intervals; ++i)
@@ -213,6 +222,31 @@ const std::array<double, 7> kSamplePoints = [] {
   return etas;
 }();
 
+// The integral of z r dr over the membrane on the profile (lengths / A), z = tip - height(s) and
+// r = rho(s) along each element's interpolated arclength: the elements' Gauss rule, accurate to
+// the smooth integrand's order h^10.
+double contact_volume_integral(const Mesh& mesh, const Eigen::VectorXd& x,
+                               const RigidProfile& profile, double tip) {
+  double sum = 0.0;
+  std::array<double, kMaxOrder + 1> n{}, dn{};
+  for (const MeshPart& part : mesh.parts) {
+    if (!part.profile) continue;
+    for (int e = 0; e < part.elements; ++e)
+      for (const auto& [eta, w_gauss] : gauss_points()) {
+        shape_functions(mesh.order, eta, n, dn);
+        double arclength = 0.0, d_arclength = 0.0;
+        for (int i = 0; i <= mesh.order; ++i) {
+          const double node = value_of(part.r[e * mesh.order + i], x);
+          arclength += n[i] * node;
+          d_arclength += dn[i] * node;
+        }
+        sum += (tip - profile.height(arclength)) * profile.radius(arclength) *
+               profile.radius_slope(arclength) * d_arclength * w_gauss;
+      }
+  }
+  return sum;
+}
+
 // The converged state in physical units.
 FeState make_state(const Problem& problem, const RigidProfile& profile, const Mesh& mesh,
                    const Eigen::VectorXd& x, const Assembly& assembly, const Scaled& s) {
@@ -221,11 +255,23 @@ FeState make_state(const Problem& problem, const RigidProfile& profile, const Me
   state.contact = FeContact::Frictionless;
   state.order = mesh.order;
   state.depth_mm = s.depth * A;
-  state.normalized_force = assembly.reaction / s.clamp;
-  state.force_n = assembly.reaction * (force_scale_n(problem) / s.clamp);
-  state.stored_energy_nmm = assembly.energy * 2.0 * std::numbers::pi *
-                            problem.material.shear_modulus_mpa * problem.geometry.thickness_mm * A *
-                            A;
+  double reaction = assembly.reaction, energy = assembly.energy;
+  if (s.pressure != 0.0) {
+    // The gas on the contact, whose volume moves with the probe: d(P int z r dr)/d(depth) is
+    // P rho(edge)^2 / 2 (on a flat face alone the whole force, p pi c^2).  U is the energy less
+    // the free part's P int z r dr.
+    const double edge_radius = value_of(mesh.parts.back().r.front(), x);
+    reaction += 0.5 * s.pressure * edge_radius * edge_radius;
+    const double free_volume = free_volume_integral(mesh, x);
+    energy -= s.pressure * free_volume;
+    state.volume_mm3 = -2.0 * std::numbers::pi *
+                       (free_volume + contact_volume_integral(mesh, x, profile, s.tip())) * A * A *
+                       A;
+  }
+  state.normalized_force = reaction / s.clamp;
+  state.force_n = reaction * (force_scale_n(problem) / s.clamp);
+  state.stored_energy_nmm = energy * 2.0 * std::numbers::pi * problem.material.shear_modulus_mpa *
+                            problem.geometry.thickness_mm * A * A;
   state.unknowns = mesh.unknowns;
   int segments = 0;
   for (const MeshPart& part : mesh.parts) {
@@ -240,11 +286,11 @@ FeState make_state(const Problem& problem, const RigidProfile& profile, const Me
       if (part.profile) {
         out.arclength_mm.push_back(r * A);
         out.radius_mm.push_back(profile.radius(r) * A);
-        out.deflection_mm.push_back((s.depth - profile.height(r)) * A);
+        out.deflection_mm.push_back((s.tip() - profile.height(r)) * A);
       } else {
         out.radius_mm.push_back(r * A);
         out.deflection_mm.push_back(z * A);
-        const double inside = -profile.gap(r, s.depth - z) * A;
+        const double inside = -profile.gap(r, s.tip() - z) * A;
         state.largest_penetration_mm = std::max(state.largest_penetration_mm, inside);
       }
     }
@@ -318,6 +364,17 @@ StepResult solve_at_edge(const Problem& problem, const RigidProfile& profile, co
   const Mesh mesh = build_mesh(profile, s, edge, options);
   Eigen::VectorXd x =
       starting_guess(mesh, profile, s, edge, start, reference_clamp_radius_mm(problem));
+  // Under pressure a contact segment that the previous state did not reach (the side, as the
+  // flat punch's membrane starts to wrap it) may get arclengths bunched where its material
+  // arrives: an element folds.  Evenly spaced arclengths start it instead.
+  if (s.pressure > 0.0 && !std::isfinite(total_energy(problem.material.law, mesh, x)))
+    for (const MeshPart& part : mesh.parts) {
+      if (!part.profile) continue;
+      const int intervals = part.elements * mesh.order;
+      for (int i = 1; i < intervals; ++i)
+        x[part.r[i].index] = part.r.front().value +
+                             (part.r.back().value - part.r.front().value) * double(i) / intervals;
+    }
   const NewtonResult newton =
       minimise_energy(problem.material.law, mesh, x, options.max_newton_iterations);
   StepResult step;
@@ -353,9 +410,12 @@ StepResult solve_step(const Problem& problem, const RigidProfile& profile, const
   const double end = profile.contact_end(), before_end = std::nextafter(end, 0.0);
   // The edge moves in steps relative to where the profile starts to rise (past a flat face: its
   // steps from the pole would cross a small fillet at once).
-  const double base = profile.rise_start();
+  // On an inflated dome the contact grows from the pole, on a flat face too.
+  const double base = s.pressure > 0.0 ? 0.0 : profile.rise_start();
   auto angle_at = [&](double edge) {
-    if (!(edge > 0.0) || !(profile.height(edge) < s.depth))
+    // (Under pressure the edge may lie above the clamp plane: then it must stay inside the clamp.)
+    if (!(edge > 0.0) ||
+        !(s.pressure > 0.0 ? profile.radius(edge) < s.clamp : profile.height(edge) < s.depth))
       throw std::runtime_error("the contact edge would reach the clamp plane");
     if (edge > end) throw BeyondContactEnd{};
     last = solve_at_edge(problem, profile, s, edge, latest ? &*latest : previous, options);
@@ -445,6 +505,36 @@ double first_edge_guess(const RigidProfile& profile, double depth) {
   return 0.5 * (lo + hi);
 }
 
+// A first guess of the contact edge on the inflated dome's first step: the profile at the depth
+// meets the undeformed dome (its drop below the pole at the profile's radius plus the profile's
+// height reaches the depth) at an arclength s; a contact spreads over about s / sqrt(2) (Hertz:
+// a^2 = R delta against the overlap's 2 R delta).
+double dome_edge_guess(const RigidProfile& profile, const FeState& dome, const Scaled& s,
+                       double A) {
+  const FePart& part = dome.parts.front();
+  auto drop = [&](double r) {  // below the pole, linear between the dome's nodes
+    const auto& rs = part.radius_mm;
+    const std::size_t k = std::min<std::size_t>(
+        std::upper_bound(rs.begin(), rs.end(), r * A) - rs.begin(), rs.size() - 1);
+    const std::size_t j = k == 0 ? 0 : k - 1;
+    const double w = rs[k] > rs[j] ? (r * A - rs[j]) / (rs[k] - rs[j]) : 0.0;
+    return (part.deflection_mm[j] + w * (part.deflection_mm[k] - part.deflection_mm[j]) -
+            part.deflection_mm.front()) /
+           A;
+  };
+  auto overlap = [&](double arclength) {
+    return profile.height(arclength) + drop(profile.radius(arclength)) - s.depth;
+  };
+  double lo = 0.0, hi = 1e-3;
+  for (int k = 0; k < 200 && overlap(hi) < 0.0 && profile.radius(2.0 * hi) < 0.9 * s.clamp; ++k)
+    lo = hi, hi *= 2.0;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (overlap(mid) < 0.0 ? lo : hi) = mid;
+  }
+  return std::min(0.5 * (lo + hi) / std::sqrt(2.0), profile.contact_end());
+}
+
 }  // namespace
 
 std::vector<FeState> solve_smooth_probe(const Problem& problem, const RigidProfile& profile,
@@ -455,6 +545,23 @@ std::vector<FeState> solve_smooth_probe(const Problem& problem, const RigidProfi
   s.clamp = problem.preload.prestretch;
   std::vector<FeState> states;
   std::optional<FeState> previous;
+  std::optional<FeState> dome;  // under a gas pressure, the start: depths count from its pole
+  if (problem.preload.pressure_mpa > 0.0) {
+    FeDome inflated = solve_dome(problem, options);
+    if (!inflated.state.ok()) {
+      for (double d : depths_mm) {
+        FeState failed = inflated.state;
+        failed.parts.clear();
+        failed.depth_mm = d;
+        states.push_back(failed);
+      }
+      return states;
+    }
+    s.lift = inflated.height;
+    s.pressure = detail::dome_pressure(problem);
+    dome = inflated.state;
+    previous = inflated.state;
+  }
   double depth = 0.0, step = options.max_depth_step, edge = 0.0;
   for (double target_mm : depths_mm) {
     const double target = target_mm / A;
@@ -464,7 +571,9 @@ std::vector<FeState> solve_smooth_probe(const Problem& problem, const RigidProfi
     while (depth < target && failure.empty()) {
       s.depth = std::min(target, depth + step);
       if (target - s.depth < 1e-3 * step) s.depth = target;  // no sliver of a last step
-      const double start_edge = previous ? edge : first_edge_guess(profile, s.depth);
+      const double start_edge = previous && edge > 0.0 ? edge
+                                : dome                 ? dome_edge_guess(profile, *dome, s, A)
+                                                       : first_edge_guess(profile, s.depth);
       StepResult result = solve_step(problem,
                                      profile,
                                      s,

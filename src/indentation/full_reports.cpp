@@ -136,23 +136,36 @@ std::string full_report(const Problem& p) {
                     "depths from the inflated pole)"
                   : " MPa (held; the membrane is inflated first, depths from the inflated pole)"));
     // Which inflated state the indentation starts from, when there is one (else the solve says
-    // why): the first, reached by inflating slowly from flat.
+    // why): the first, reached by inflating slowly from flat, unless Preload::inflated_state
+    // chooses another.
     SolverOptions quiet;
     quiet.record_fields = false;
+    const int chosen = p.preload.inflated_state;
     if (const auto at =
             inflate_at_pressure(inflation_problem(p), p.preload.pressure_mpa, {}, quiet);
         at.ok()) {
-      const auto& first = at.states.front();
+      const std::size_t n = at.states.size();
+      const std::size_t k =
+          chosen == kLastInflatedState ? n : std::min(n, std::size_t(std::max(chosen, 1)));
+      const auto& used = at.states[k - 1];
+      std::string which;
+      if (chosen == 1 && n > 1)
+        which = fmt::format(
+            " (the first of {} states at this pressure, reached by inflating slowly from flat; "
+            "the others are not used)",
+            n);
+      else if (chosen != 1)
+        which = fmt::format(
+            " (state {} of {} at this pressure in order of pole stretch, as "
+            "chosen; the first is reached by inflating slowly from flat)",
+            k,
+            n);
       line(out,
            "inflated state",
            fmt::format("pole stretch {}, pole {} mm above the clamp{}",
-                       num(first.pole_stretch),
-                       num(first.pole_height_mm),
-                       at.states.size() > 1
-                           ? fmt::format(" (the first of {} states at this pressure, reached by "
-                                         "inflating slowly from flat; the others are not used)",
-                                         at.states.size())
-                           : std::string()));
+                       num(used.pole_stretch),
+                       num(used.pole_height_mm),
+                       which));
     }
   }
   if (const auto v0 = p.preload.gas_volume_mm3)

@@ -71,7 +71,20 @@ std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOp
   quiet.record_fields = false;
   const double target = p_mpa / solver_pressure_scale_mpa(membrane);
   double pole_stretch = 0.0, pressure_guess = 0.0;
-  if (const auto crossing = first_crossing(membrane, target, quiet)) {
+  const int chosen = problem.preload.inflated_state;
+  if (chosen != 1) {  // another branch: every state at the pressure (validated: it exists)
+    const InflationAtPressure at = inflate_at_pressure(membrane, p_mpa, {}, quiet);
+    const std::size_t k = chosen == kLastInflatedState ? at.states.size() : std::size_t(chosen);
+    if (!at.ok() || k < 1 || k > at.states.size())
+      throw PhysicalFailure(at.ok() ? Status::NotReached : at.status,
+                            fmt::format("inflated state {} at {:g} MPa not found ({} states{})",
+                                        chosen,
+                                        p_mpa,
+                                        at.states.size(),
+                                        at.ok() ? "" : ": " + at.message));
+    pole_stretch = at.states[k - 1].pole_stretch;
+    pressure_guess = at.states[k - 1].normalized_pressure / membrane.prestretch;
+  } else if (const auto crossing = first_crossing(membrane, target, quiet)) {
     pole_stretch = *crossing;
     pressure_guess = target;
   } else {
@@ -111,9 +124,12 @@ std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOp
         Status::OutsideModel,
         fmt::format(
             "at {:g} MPa the inflated membrane overhangs its clamp (slope {:.4g} rad at the "
-            "clamp): indenting a dome beyond a hemisphere is not modelled",
+            "clamp): indenting a dome beyond a hemisphere is not modelled{}",
             p_mpa,
-            dome.clamp_slope));
+            dome.clamp_slope,
+            chosen == 1 ? std::string()
+                        : fmt::format(" (the chosen inflated state, pole stretch {:.8g})",
+                                      dome.pole_stretch)));
   InflatedDome out;
   out.pressure = dome_pressure(problem);
   out.height = dome.pole_height;

@@ -16,10 +16,10 @@ struct InflatedDome {
   ScaledSolution state;   // Unloaded, all of it Part I from the pole to the clamp
 };
 
-// The first inflated state at the problem's pressure (the one reached by inflating slowly from
-// flat); empty without pressure.  Throws PhysicalFailure (reported_failure.hpp) when no inflated
-// state holds the pressure (it bursts or snaps through before contact) or the dome overhangs its
-// clamp (outside the indentation model).
+// The inflated state at the problem's pressure that Preload::inflated_state chooses (the first,
+// reached by inflating slowly from flat, by default); empty without pressure.  Throws
+// PhysicalFailure (reported_failure.hpp) when no inflated state holds the pressure (it bursts or
+// snaps through before contact) or the dome overhangs its clamp (outside the indentation model).
 std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOptions& options);
 
 }  // namespace puncture::detail

@@ -16,6 +16,7 @@
 #include "mechanics/membrane_validation.hpp"
 #include "puncture/energy_release.hpp"
 #include "puncture/failure.hpp"
+#include "puncture/inflation.hpp"
 #include "puncture/membrane_stress.hpp"
 
 namespace puncture {
@@ -327,6 +328,42 @@ void append_fillet_errors(std::vector<ValidationError>& errors, const Problem& p
                       "flat punch: give a fillet radius of 0 (the sharp corner) or no gas"});
 }
 
+// Preload::inflated_state: 1, k >= 1 or the last; another than the first needs a held pressure
+// and no more states than the membrane has at it (counted by the inflation solver, only then).
+void append_inflated_state_errors(std::vector<ValidationError>& errors, const Problem& p) {
+  const int k = p.preload.inflated_state;
+  if (k == 1) return;
+  if (k < 1 && k != kLastInflatedState) {
+    errors.push_back({"preload.inflated_state",
+                      fmt::format("inflated state must be 'first', 'last' or a number >= 1 (the "
+                                  "k-th state at the pressure in order of pole stretch), got {}",
+                                  k)});
+    return;
+  }
+  if (!(p.preload.pressure_mpa > 0.0) || p.preload.gas_volume_mm3) {
+    errors.push_back({"preload.inflated_state",
+                      "an inflated state other than the first needs a held gas pressure (> 0 "
+                      "MPa, no sealed chamber)"});
+    return;
+  }
+  if (!errors.empty()) return;  // the inflation needs a valid membrane
+  SolverOptions quiet;
+  quiet.record_fields = false;
+  const InflationAtPressure at =
+      inflate_at_pressure(inflation_problem(p), p.preload.pressure_mpa, {}, quiet);
+  const int found = at.ok() ? int(at.states.size()) : 0;
+  if (k != kLastInflatedState && k > found)
+    errors.push_back(
+        {"preload.inflated_state",
+         fmt::format("the membrane has {} inflated state{} at {} MPa below its burst{}, so "
+                     "state {} does not exist",
+                     found,
+                     found == 1 ? "" : "s",
+                     p.preload.pressure_mpa,
+                     at.ok() ? "" : " (" + at.message + ")",
+                     k)});
+}
+
 }  // namespace detail
 
 std::vector<ValidationError> validation_errors(const Problem& p) {
@@ -402,6 +439,7 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
                                     "only so far: stick rule must be 'none', got '{}'",
                                     to_string(p.stick.rule))});
   }
+  detail::append_inflated_state_errors(errors, p);
   const auto& s = p.stick;
   // The sphere-tipped probe's stick stage (docs/model.md §15.4) holds material where it touched
   // the flat membrane: under a gas pressure it would touch the inflated dome, not solved.

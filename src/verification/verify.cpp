@@ -32,6 +32,11 @@ std::string group_of(FeContact contact) {
 // no Foppl disc for the small-deflection check): every probe but the sharp flat punch.
 bool smooth_probe(const Problem& problem) { return !sharp_flat_punch(problem.indenter); }
 
+// Under a gas pressure every probe is solved as a profile, frictionless, from the inflated dome
+// (the sharp flat punch's face first touches a growing disc): the smooth probes' rows.
+bool inflated(const Problem& problem) { return problem.preload.pressure_mpa > 0.0; }
+bool profile_rows(const Problem& problem) { return smooth_probe(problem) || inflated(problem); }
+
 // The user's membrane in one of the two limits the finite elements cover.
 Problem limit_problem(const Problem& problem, FeContact contact) {
   Problem q = problem;
@@ -177,7 +182,7 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
         fe[k].force_n,
         std::max(1e-6, 4.0 * force_error),
         fmt::format("1e-6, or 4x the elements' error (estimated {:.1e}, order 4)", force_error)));
-    if (contact == FeContact::Frictionless && !smooth_probe(q))
+    if (contact == FeContact::Frictionless && !profile_rows(q))
       checks.rows.push_back(check(group,
                                   "Part III stretch",
                                   where,
@@ -186,12 +191,12 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
                                   2e-4,
                                   "the corner moves with the side's top, located to the "
                                   "square root of the force's error"));
-    if (smooth_probe(q)) {
+    if (profile_rows(q)) {
       const double stretch_error =
           estimated_error(fe[k].part_three_stretch, fe_coarse[k].part_three_stretch, 2);
       checks.rows.push_back(
           check(group,
-                "pole stretch",
+                smooth_probe(q) ? "pole stretch" : "Part III stretch",
                 where,
                 e.part_three_stretch,
                 fe[k].part_three_stretch,
@@ -240,10 +245,11 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
     if (!e.ok() && failure.empty()) failure = e.message;
     return e.ok() ? e.force_n : 0.0;
   };
-  // Pre-stretched, the force is linear in the depth near 0 (docs/model.md §16) and smooth: the
-  // quadrature starts at 0.
+  // Pre-stretched or inflated, the force is linear in the depth near 0 (docs/model.md §16, §17)
+  // and smooth: the quadrature starts at 0.
   const bool prestretched = q.preload.prestretch != 1.0;
-  std::vector<double> ends{prestretched ? 0.0 : 0.01 * depths.back()};
+  const bool from_zero = prestretched || inflated(q);
+  std::vector<double> ends{from_zero ? 0.0 : 0.01 * depths.back()};
   if (contact == FeContact::Frictionless) {
     CurveOptions coarse_curve;
     coarse_curve.points = 20;
@@ -253,7 +259,7 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
       ends.push_back(*curve.part_two_onset_depth_mm);
   }
   ends.push_back(depths.back());
-  double work = prestretched ? 0.0 : force(ends.front()) * ends.front() / 4.0;
+  double work = from_zero ? 0.0 : force(ends.front()) * ends.front() / 4.0;
   double quadrature_error = 0.0;
   for (std::size_t k = 1; k < ends.size(); ++k) {
     double piece_error = 0.0;
@@ -264,6 +270,36 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
   if (!failure.empty()) {
     checks.rows.push_back(
         skipped(group, "work of F = stored energy [N mm]", where, "shooting: " + failure));
+    return;
+  }
+  if (inflated(q)) {
+    // At constant pressure the work goes into Pi = U - p V (docs/model.md §17): against the
+    // elements' Pi less their dome's.
+    FeOptions fine_dome, coarse_dome;
+    fine_dome.elements = options.elements;
+    coarse_dome.elements = std::max(2, options.elements / 2);
+    const FeState dome = fe_inflated_state(q, fine_dome);
+    const FeState dome_coarse = fe_inflated_state(q, coarse_dome);
+    if (!dome.ok() || !dome_coarse.ok()) {
+      checks.rows.push_back(
+          skipped(group, "work of F = change of U - p V [N mm]", where, "dome: " + dome.message));
+      return;
+    }
+    const double p = q.preload.pressure_mpa;
+    auto change = [&](const FeState& s, const FeState& d) {
+      return s.stored_energy_nmm - p * s.volume_mm3 - (d.stored_energy_nmm - p * d.volume_mm3);
+    };
+    const double fine_change = change(last, dome), coarse_change = change(last_coarse, dome_coarse);
+    const double change_error = estimated_error(fine_change, coarse_change, 4);
+    checks.rows.push_back(
+        check(group,
+              "work of F = change of U - p V [N mm]",
+              where,
+              work,
+              fine_change,
+              std::max(1e-6, 4.0 * change_error + quadrature_error / std::abs(work)),
+              fmt::format("1e-6, or 4x the elements' error (estimated {:.1e}) + the quadrature's",
+                          change_error)));
     return;
   }
   const double energy_error =
@@ -354,14 +390,73 @@ void compare_small_deflection(const Problem& problem, Checks& checks) {
   }
 }
 
+// Under a gas pressure, in place of the small-deflection limits (the inflated membrane is not
+// Foppl's flat disc): the elements' dome, the minimum of U - p V, against the inflation solver's
+// first state (its shooting from the pole), pole stretch and height.
+void compare_inflated_dome(const Problem& problem, const VerifyOptions& options, Checks& checks) {
+  checks.step("inflated dome: finite elements against the shooting");
+  const std::string group = "inflated dome";
+  const std::string where =
+      fmt::format("p = {:g} MPa, before contact", problem.preload.pressure_mpa);
+  FeOptions fine, coarse;
+  fine.elements = options.elements;
+  coarse.elements = std::max(2, options.elements / 2);
+  const FeState dome = fe_inflated_state(problem, fine);
+  const FeState dome_coarse = fe_inflated_state(problem, coarse);
+  // The state the indentation starts from (depth 0, the inflation solver's shooting from the
+  // pole), its fields reaching the dome's height at the clamp.
+  SolverOptions sampled;
+  sampled.field_points = 50;
+  const Equilibrium e =
+      solve_at_depth(limit_problem(problem, FeContact::Frictionless), 0.0, Stage::Slip, sampled);
+  if (!dome.ok() || !dome_coarse.ok() || !e.ok() || e.fields.deflection_mm.empty()) {
+    checks.rows.push_back(
+        skipped(group,
+                "pole stretch",
+                where,
+                !e.ok() ? "shooting: " + e.message : "elements: " + dome.message));
+    return;
+  }
+  struct Row {
+    const char* quantity;
+    double shooting, fine, coarse;
+    const char* what;
+  };
+  const double height = -dome.parts.front().deflection_mm.front();
+  const double height_coarse = -dome_coarse.parts.front().deflection_mm.front();
+  for (const Row& row : {Row{"pole stretch",
+                             e.part_three_stretch,
+                             dome.part_three_stretch,
+                             dome_coarse.part_three_stretch,
+                             "a derivative of the elements at the pole"},
+                         Row{"pole height [mm]",
+                             e.fields.deflection_mm.back(),
+                             height,
+                             height_coarse,
+                             "a node of the elements"},
+                         Row{"largest I1",
+                             e.max_first_invariant,
+                             dome.max_first_invariant,
+                             dome_coarse.max_first_invariant,
+                             "a derivative of the elements"}}) {
+    const double error = estimated_error(row.fine, row.coarse, 2);
+    checks.rows.push_back(check(group,
+                                row.quantity,
+                                where,
+                                row.shooting,
+                                row.fine,
+                                std::max(1e-5, 4.0 * error),
+                                fmt::format("{}: 1e-5, or 4x their error (estimated {:.1e}, "
+                                            "order 2)",
+                                            row.what,
+                                            error)));
+  }
+}
+
 }  // namespace
 
 VerificationReport verify(const Problem& problem, const VerifyOptions& options) {
   validate(problem);
-  if (problem.preload.pressure_mpa > 0.0)
-    throw InvalidInput(
-        "preload.pressure_mpa",
-        "the verification methods are not implemented for an inflated membrane (pressure > 0) yet");
   if (problem.preload.gas_volume_mm3)
     throw InvalidInput(
         "preload.gas_volume_mm3",
@@ -374,12 +469,17 @@ VerificationReport verify(const Problem& problem, const VerifyOptions& options) 
         fmt::format("depths: must be in the range 1 to 50, got {}", options.depths));
   // A smooth probe (every probe but the sharp flat punch): the frictionless limit alone (its
   // stick stage is not modelled, and the small-deflection check is the flat punch's Foppl disc).
-  const bool smooth = smooth_probe(problem);
-  Checks checks(options, smooth ? 5 : 2 * 5 + 2);
+  // Under a gas pressure the same, frictionless (the held edge would need the stick stage's
+  // history), with the dome in place of the small-deflection limits.
+  const bool smooth = smooth_probe(problem), pressurised = inflated(problem);
+  Checks checks(options, smooth ? 5 : pressurised ? 6 : 2 * 5 + 2);
   for (const FeContact contact : {FeContact::Frictionless, FeContact::Held})
-    if (!smooth || contact == FeContact::Frictionless)
+    if (!(smooth || pressurised) || contact == FeContact::Frictionless)
       compare_limit(problem, contact, options, checks);
-  if (!smooth) compare_small_deflection(problem, checks);
+  if (pressurised)
+    compare_inflated_dome(problem, options, checks);
+  else if (!smooth)
+    compare_small_deflection(problem, checks);
   VerificationReport report;
   report.checks = std::move(checks.rows);
   report.elements = options.elements;
