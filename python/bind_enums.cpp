@@ -27,9 +27,6 @@ void bind_enums(py::module_& m) {
       .value("ForceMaximum",
              CurveEventKind::ForceMaximum,
              "dF/d(depth) = 0, the force falls after: force control snaps through")
-      .value("DepthFold",
-             CurveEventKind::DepthFold,
-             "the depth turns back along the path: depth control snaps back")
       .value("ContactShrinks",
              CurveEventKind::ContactShrinks,
              "the contact's edge moves back towards the tip as the probe goes deeper")

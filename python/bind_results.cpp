@@ -318,7 +318,7 @@ void bind_results(py::module_& m) {
                     "it are not the membrane's states); None otherwise")
       .def_readonly("events",
                     &LoadingCurve::events,
-                    "force maxima, depth folds and a shrinking contact (list of CurveEvent)")
+                    "force maxima and a shrinking contact (list of CurveEvent)")
       .def_readonly("failure_verdict",
                     &LoadingCurve::failure_verdict,
                     "a pre-tensioned membrane: which failure comes first (FailureVerdict), else "

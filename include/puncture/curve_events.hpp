@@ -1,8 +1,9 @@
 #pragma once
-// What happens along a loading curve besides its points: the instabilities a testing machine
-// would see (a force maximum, where force control snaps through; a fold of the depth, where
-// depth control snaps back), the contact shrinking as the probe goes deeper, and, for a
-// pre-tensioned membrane, which failure comes first (docs/model.md §8.1).
+// What happens along a loading curve besides its points: a force maximum (where force control
+// snaps through), the contact shrinking as the probe goes deeper, and, for a pre-tensioned
+// membrane, which failure comes first (docs/model.md §8.1).  A fold of the depth (where depth
+// control would snap back) is not detected: the curve is followed in depth control only, and
+// where no state exists at a depth it fails with a status.
 #include <optional>
 #include <string>
 
@@ -12,23 +13,19 @@ enum class CurveEventKind {
   // dF/d(depth) = 0 with the force falling after: under force control the probe snaps through
   // to the deeper state of the same force (if the curve reaches it again).
   ForceMaximum,
-  // The depth turns back along the path (d(depth)/ds = 0): under depth control the membrane
-  // snaps back to another branch; the curve follows the path through it.
-  DepthFold,
   // The contact (the probe's outline covered by the membrane) shrinks as the probe goes deeper:
   // its edge moves back towards the tip.
   ContactShrinks,
 };
 
 std::string to_string(CurveEventKind kind);
-// "force_maximum", "depth_fold", "contact_shrinks": as written in JSON.
+// "force_maximum", "contact_shrinks": as written in JSON.
 std::string to_token(CurveEventKind kind);
 
 struct CurveEvent {
   CurveEventKind kind = CurveEventKind::ForceMaximum;
   // Where it starts, located by a bracketed solve between the curve's points (dF/d(depth) = 0
-  // for a force maximum, d(depth)/ds = 0 for a fold, d(reach)/d(depth) = 0 where the contact
-  // starts shrinking) [mm, N].
+  // for a force maximum, d(reach)/d(depth) = 0 where the contact starts shrinking) [mm, N].
   double depth_mm = 0.0;
   double force_n = 0.0;
   // ForceMaximum: the deeper depth where the curve carries this force again (force control's

@@ -89,8 +89,8 @@ struct LoadingCurve : Outcome {
   // points before it slide inward and are not the membrane's states.  Nothing otherwise.
   std::optional<double> face_slides_outward_from_mm;
   PuncturePrediction puncture;
-  // Force maxima (snap-through under force control), depth folds (snap-back under depth
-  // control) and a shrinking contact along the curve, in order of depth (docs/model.md §8.1).
+  // Force maxima (snap-through under force control) and a shrinking contact along the curve,
+  // in order of depth (docs/model.md §8.1).
   std::vector<CurveEvent> events;
   // A pre-tensioned membrane (pressure, sealed gas or pre-stretch): which failure comes first,
   // local puncture at the probe or a global one.  Empty for a membrane mounted stress-free.

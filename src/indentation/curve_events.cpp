@@ -16,8 +16,6 @@ std::string to_string(CurveEventKind kind) {
   switch (kind) {
     case CurveEventKind::ForceMaximum:
       return "force maximum";
-    case CurveEventKind::DepthFold:
-      return "depth fold";
     case CurveEventKind::ContactShrinks:
       return "contact shrinks";
   }
@@ -28,8 +26,6 @@ std::string to_token(CurveEventKind kind) {
   switch (kind) {
     case CurveEventKind::ForceMaximum:
       return "force_maximum";
-    case CurveEventKind::DepthFold:
-      return "depth_fold";
     case CurveEventKind::ContactShrinks:
       return "contact_shrinks";
   }

@@ -60,13 +60,12 @@ std::string part_two_text(const LoadingCurve& c, const Problem& p) {
 // all the way).
 void events_lines(std::string& out, const LoadingCurve& c) {
   if (c.events.empty()) {
-    line(out, "snap-through, folds", "none: the force and the contact grow with the depth");
+    line(out, "snap-through", "none: the force and the contact grow with the depth");
     return;
   }
   for (const CurveEvent& e : c.events) {
-    const char* label = e.kind == CurveEventKind::ForceMaximum ? "SNAP-THROUGH (force)"
-                        : e.kind == CurveEventKind::DepthFold  ? "SNAP-BACK (depth fold)"
-                                                               : "CONTACT SHRINKS";
+    const char* label =
+        e.kind == CurveEventKind::ForceMaximum ? "SNAP-THROUGH (force)" : "CONTACT SHRINKS";
     line(out, label, e.description);
   }
 }
