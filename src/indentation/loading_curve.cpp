@@ -71,8 +71,8 @@ std::optional<double> face_outward_from(const Problem& p, const std::vector<Curv
 void add_events(const Problem& p, const SolverOptions& options, LoadingCurve& out) {
   if (!out.ok()) return;
   const SolverOptions quiet = without_fields(options);
-  const detail::DepthSampler at_depth =
-      [&](double depth_mm, Stage stage) -> std::optional<detail::DepthSample> {
+  const detail::DepthSampler at_depth = [&](double depth_mm,
+                                            Stage stage) -> std::optional<detail::DepthSample> {
     const Equilibrium e = solve_at_depth(p, depth_mm, stage, quiet);
     if (!e.ok()) return std::nullopt;
     return detail::DepthSample{e.force_n, e.contact_edge_radius_mm + e.contact_edge_height_mm};
