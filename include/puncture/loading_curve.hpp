@@ -76,6 +76,10 @@ struct CurveOptions {
   // instead of the even grid (points and max_depth_mm are then ignored); a measured record's.
   std::vector<double> depths_mm;
   std::function<void(int done, int total)> progress;  // called after each point, if set
+  // Find the curve's events and locate each by solves at depths (LoadingCurve::events; tens of
+  // solves per event), and give the failure verdict: off for a fit's many curves, which read
+  // the points alone (then neither is given).
+  bool locate_events = true;
 };
 
 struct LoadingCurve : Outcome {

@@ -67,9 +67,10 @@ std::optional<double> face_outward_from(const Problem& p, const std::vector<Curv
 
 // The curve's events, each located by states solved at depths (the public solve: the same
 // states as the curve's, a sealed chamber's included), and the verdict on which failure comes
-// first.
-void add_events(const Problem& p, const SolverOptions& options, LoadingCurve& out) {
-  if (!out.ok()) return;
+// first (which needs the events: neither without CurveOptions::locate_events).
+void add_events(const Problem& p, const CurveOptions& curve, const SolverOptions& options,
+                LoadingCurve& out) {
+  if (!out.ok() || !curve.locate_events) return;
   const SolverOptions quiet = without_fields(options);
   const detail::DepthSampler at_depth = [&](double depth_mm,
                                             Stage stage) -> std::optional<detail::DepthSample> {
@@ -150,7 +151,7 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
       auto out = detail::sealed_loading_curve(p, curve, options);
       out.puncture = with_face_slip_checked(p, std::move(out.puncture));
       out.face_slides_outward_from_mm = face_outward_from(p, out.points);
-      add_events(p, options, out);
+      add_events(p, curve, options, out);
       return out;
     });
   return detail::reporting_failures<LoadingCurve>([&] {
@@ -160,7 +161,7 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
       followed.face_slides_outward_from_mm = face_outward_from(p, followed.points);
       return followed;
     });
-    add_events(p, options, out);
+    add_events(p, curve, options, out);
     return out;
   });
 }
