@@ -1,5 +1,6 @@
 // The library's enums.  Each has a `token`: the name the CLI writes in CSV and JSON.
 #include "bindings.hpp"
+#include "puncture/curve_events.hpp"
 #include "puncture/equilibrium.hpp"
 
 namespace puncture::python {
@@ -21,6 +22,27 @@ void bind_enums(py::module_& m) {
              "Part III, the corner wrapped, Part II on the indenter's side, then Part I")
       .def_property_readonly("token", [](Configuration c) { return to_token(c); })
       .def_property_readonly("description", [](Configuration c) { return to_string(c); });
+
+  py::enum_<CurveEventKind>(m, "CurveEventKind", "An event along the loading curve")
+      .value("ForceMaximum",
+             CurveEventKind::ForceMaximum,
+             "dF/d(depth) = 0, the force falls after: force control snaps through")
+      .value("ContactShrinks",
+             CurveEventKind::ContactShrinks,
+             "the contact's edge moves back towards the tip as the probe goes deeper")
+      .def_property_readonly("token", [](CurveEventKind k) { return to_token(k); })
+      .def_property_readonly("description", [](CurveEventKind k) { return to_string(k); });
+
+  py::enum_<FailureMode>(m, "FailureMode", "Which failure of a pre-tensioned membrane comes first")
+      .value("LocalPuncture", FailureMode::LocalPuncture, "the criterion is met first at the probe")
+      .value("GlobalBurst",
+             FailureMode::GlobalBurst,
+             "the criterion is met first in the free membrane, away from the probe")
+      .value("GlobalLimitPoint",
+             FailureMode::GlobalLimitPoint,
+             "the force reaches a maximum before puncture: the membrane snaps through or bursts")
+      .def_property_readonly("token", [](FailureMode f) { return to_token(f); })
+      .def_property_readonly("description", [](FailureMode f) { return to_string(f); });
 
   py::class_<ValidationError>(m,
                               "ValidationError",

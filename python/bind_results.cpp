@@ -202,6 +202,12 @@ void bind_results(py::module_& m) {
                     &CurvePoint::beyond_puncture,
                     "True past the puncture point (the model's continuation)")
       .def_readonly("gas", &CurvePoint::gas, "a sealed chamber's gas (ChamberGas), else None")
+      .def_readonly("contact_edge_radius_mm",
+                    &CurvePoint::contact_edge_radius_mm,
+                    "current radius where the membrane leaves the probe [mm]")
+      .def_readonly("contact_edge_height_mm",
+                    &CurvePoint::contact_edge_height_mm,
+                    "height of that edge above the probe's tip [mm]")
       .def("__repr__", [](const CurvePoint& p) {
         return fmt::format("<CurvePoint depth_mm={:.6g}, force_n={:.6g}, {}>",
                            p.depth_mm,
@@ -222,6 +228,40 @@ void bind_results(py::module_& m) {
                            s.depth_mm,
                            s.force_stuck_n,
                            s.force_sliding_n);
+      });
+
+  py::class_<CurveEvent>(m, "CurveEvent", "An event along the loading curve, located")
+      .def_readonly("kind", &CurveEvent::kind)
+      .def_readonly("depth_mm", &CurveEvent::depth_mm, "where it starts [mm]")
+      .def_readonly("force_n", &CurveEvent::force_n, "the force there [N]")
+      .def_readonly("end_depth_mm",
+                    &CurveEvent::end_depth_mm,
+                    "force maximum: where the curve carries the force again; contact shrinks: "
+                    "where it grows again [mm]; None beyond the curve")
+      .def_readonly("contact_reach_mm",
+                    &CurveEvent::contact_reach_mm,
+                    "the contact edge's radius plus its height above the tip [mm]")
+      .def_readonly("depth_uncertainty_mm", &CurveEvent::depth_uncertainty_mm)
+      .def_readonly("description", &CurveEvent::description)
+      .def("__repr__", [](const CurveEvent& e) {
+        return fmt::format("<CurveEvent {} at depth_mm={:.6g}, force_n={:.6g}>",
+                           to_token(e.kind),
+                           e.depth_mm,
+                           e.force_n);
+      });
+
+  py::class_<FailureVerdict>(
+      m, "FailureVerdict", "Which failure of a pre-tensioned membrane comes first, and where")
+      .def_readonly("mode", &FailureVerdict::mode)
+      .def_readonly("depth_mm", &FailureVerdict::depth_mm)
+      .def_readonly("force_n", &FailureVerdict::force_n)
+      .def_readonly("where", &FailureVerdict::where)
+      .def_readonly("reason", &FailureVerdict::reason)
+      .def("__repr__", [](const FailureVerdict& v) {
+        return fmt::format("<FailureVerdict {} at depth_mm={:.6g}, force_n={:.6g}>",
+                           to_token(v.mode),
+                           v.depth_mm,
+                           v.force_n);
       });
 
   py::class_<PuncturePrediction, Outcome>(
@@ -276,6 +316,13 @@ void bind_results(py::module_& m) {
                     "flat punch under a gas pressure with friction: the first depth [mm] from "
                     "which the face's material slides outward, as modelled (the points before "
                     "it are not the membrane's states); None otherwise")
+      .def_readonly("events",
+                    &LoadingCurve::events,
+                    "force maxima and a shrinking contact (list of CurveEvent)")
+      .def_readonly("failure_verdict",
+                    &LoadingCurve::failure_verdict,
+                    "a pre-tensioned membrane: which failure comes first (FailureVerdict), else "
+                    "None")
       .def_property_readonly(
           "puncture",
           [](py::object self) { return member_with_problem(self, &LoadingCurve::puncture); },

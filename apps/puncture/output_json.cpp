@@ -125,6 +125,27 @@ json curve_json(const CurveReport& r) {
               {"part_two_onset", part_two},
               {"points", rows_json(curve_table(c.points))}};
   if (r.max_depth_mm > 0.0) out["max_depth_mm"] = finite(r.max_depth_mm, "max depth");
+  // Written only when there are any (docs/model.md §8.1).
+  if (!c.events.empty()) {
+    json events = json::array();
+    for (const CurveEvent& e : c.events)
+      events.push_back(
+          {{"kind", to_token(e.kind)},
+           {"depth_mm", finite(e.depth_mm, "event depth")},
+           {"force_n", finite(e.force_n, "event force")},
+           {"end_depth_mm",
+            e.end_depth_mm ? json(finite(*e.end_depth_mm, "event end depth")) : json(nullptr)},
+           {"contact_reach_mm", finite(e.contact_reach_mm, "contact reach")},
+           {"depth_uncertainty_mm", finite(e.depth_uncertainty_mm, "event depth uncertainty")},
+           {"description", e.description}});
+    out["events"] = events;
+  }
+  if (const auto& v = c.failure_verdict)
+    out["failure_verdict"] = {{"mode", to_token(v->mode)},
+                              {"depth_mm", finite(v->depth_mm, "first failure depth")},
+                              {"force_n", finite(v->force_n, "first failure force")},
+                              {"where", v->where},
+                              {"reason", v->reason}};
   // A flat punch under a gas pressure with friction: the points before it are not the membrane's
   // states (its face slides inward there).
   if (std::holds_alternative<FlatPunch>(r.problem.indenter) &&

@@ -38,6 +38,10 @@ struct Equilibrium : Outcome {
   double part_two_top_reference_radius_mm = 0.0;  // R at the Part II / Part I boundary
   double part_two_length_mm = 0.0;                // current length of Part II along the side
   double corner_slope_rad = 0.0;                  // slope of Part I where it leaves the indenter
+  // Where Part I leaves the indenter (the contact's edge): current radius and height above the
+  // tip [mm].
+  double contact_edge_radius_mm = 0.0;
+  double contact_edge_height_mm = 0.0;
   double corner_tension_ratio = 1.0;              // s1 just outside the corner / s1 in Part III
   double max_first_invariant = 3.0;  // largest I1 in the membrane: where a crack starts
   double max_first_invariant_reference_radius_mm = 0.0;        // where it is: reference radius R

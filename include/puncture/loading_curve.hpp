@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "puncture/curve_events.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/outcome.hpp"
 
@@ -24,6 +25,10 @@ struct CurvePoint {
   // punctured; the point is the model's continuation (curves with max_depth_mm).
   bool beyond_puncture = false;
   std::optional<ChamberGas> gas;  // a sealed chamber's gas at this depth, else empty
+  // The contact's edge (where Part I leaves the probe): its current distance from the axis and
+  // its height above the probe's tip [mm] (0 and 0 unloaded).
+  double contact_edge_radius_mm = 0.0;
+  double contact_edge_height_mm = 0.0;
 };
 
 // The stick -> slip switch under displacement control: at the switch depth the held state and
@@ -71,6 +76,10 @@ struct CurveOptions {
   // instead of the even grid (points and max_depth_mm are then ignored); a measured record's.
   std::vector<double> depths_mm;
   std::function<void(int done, int total)> progress;  // called after each point, if set
+  // Find the curve's events and locate each by solves at depths (LoadingCurve::events; tens of
+  // solves per event), and give the failure verdict: off for a fit's many curves, which read
+  // the points alone (then neither is given).
+  bool locate_events = true;
 };
 
 struct LoadingCurve : Outcome {
@@ -84,6 +93,12 @@ struct LoadingCurve : Outcome {
   // points before it slide inward and are not the membrane's states.  Nothing otherwise.
   std::optional<double> face_slides_outward_from_mm;
   PuncturePrediction puncture;
+  // Force maxima (snap-through under force control) and a shrinking contact along the curve,
+  // in order of depth (docs/model.md §8.1).
+  std::vector<CurveEvent> events;
+  // A pre-tensioned membrane (pressure, sealed gas or pre-stretch): which failure comes first,
+  // local puncture at the probe or a global one.  Empty for a membrane mounted stress-free.
+  std::optional<FailureVerdict> failure_verdict;
 };
 
 // Stage the membrane is in at a given depth, per the problem's stick criterion.

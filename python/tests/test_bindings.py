@@ -468,3 +468,28 @@ def test_ogden_arruda_boyce_and_gent_gent_match_cli(cli):
     assert pu.predict_puncture(plain).force_n == pu.predict_puncture(pu.Problem()).force_n
     with pytest.raises(ValueError, match="alpha"):
         pu.Material.ogden(mu_mpa=[0.1, 0.2], alpha=[2])
+
+
+def test_curve_events_and_failure_verdict_match_cli(cli):
+    # An inflated membrane (docs/model.md §8.1): no event, and the probe punctures it locally,
+    # as the CLI's JSON says.
+    problem = pu.Problem(indenter=pu.SphereTipped(radius_mm=2.0), friction=0.0,
+                         preload=pu.Preload(pressure_mpa=3e-4))
+    curve = pu.loading_curve(problem, points=20)
+    assert curve.ok
+    assert curve.events == []
+    verdict = curve.failure_verdict
+    assert verdict.mode == pu.FailureMode.LocalPuncture
+    assert verdict.mode.token == "local_puncture"
+    from_cli = cli.json("curve", "--points", "20", "--indenter", "sphere-tipped",
+                        "--indenter-radius", "2", "--friction", "0", "--pressure", "3e-4")
+    assert "events" not in from_cli["curve"]
+    cli_verdict = from_cli["curve"]["failure_verdict"]
+    assert cli_verdict["mode"] == verdict.mode.token
+    assert rel(verdict.force_n, cli_verdict["force_n"]) < 1e-9
+    assert verdict.where == cli_verdict["where"]
+    reach = [p.contact_edge_radius_mm + p.contact_edge_height_mm for p in curve.points]
+    assert all(b > a for a, b in zip(reach[1:], reach[2:]))
+    # A membrane mounted stress-free has no verdict.
+    assert pu.loading_curve(pu.Problem(), points=5).failure_verdict is None
+    assert pu.CurveEventKind.ForceMaximum.token == "force_maximum"

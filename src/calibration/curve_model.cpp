@@ -71,6 +71,7 @@ CurveModel::Normalised CurveModel::solve(const double* x) const {
     if (!unique_depths.empty() || needs_puncture_) {
       CurveOptions curve;
       curve.depths_mm = unique_depths;
+      curve.locate_events = false;  // the fit reads the forces alone
       if (curve.depths_mm.empty()) curve.depths_mm = {test_.depth_mm.back()};
       ++solves_;
       const LoadingCurve lc = loading_curve(p, curve, solver_);

@@ -162,6 +162,10 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     pt.part_three_stretch = sol->part_three_stretch;
     pt.part_two_length_mm = sol->part_two_length * big_a;
     pt.corner_slope_rad = sol->corner_slope;
+    if (sol->configuration != Configuration::Unloaded) {
+      pt.contact_edge_radius_mm = sol->edge_radius * big_a;
+      pt.contact_edge_height_mm = contact.free_part_inner_height(*sol) * big_a;
+    }
     pt.max_first_invariant = max_first_invariant_of(*sol);
     pt.beyond_puncture = any_exceeded(p, contact, *sol);
     out.points.push_back(pt);

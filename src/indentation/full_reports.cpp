@@ -59,6 +59,20 @@ std::string part_two_text(const LoadingCurve& c, const Problem& p) {
   return *c.part_two_onset_depth_mm > end ? text + ", beyond the end of the curve" : text;
 }
 
+// The curve's events, one line each (or that there are none: the force and the contact grow
+// all the way).
+void events_lines(std::string& out, const LoadingCurve& c) {
+  if (c.events.empty()) {
+    line(out, "snap-through", "none: the force and the contact grow with the depth");
+    return;
+  }
+  for (const CurveEvent& e : c.events) {
+    const char* label =
+        e.kind == CurveEventKind::ForceMaximum ? "SNAP-THROUGH (force)" : "CONTACT SHRINKS";
+    line(out, label, e.description);
+  }
+}
+
 // A sealed chamber's gas in a state.
 std::string gas_text(const ChamberGas& gas) {
   return fmt::format("pressure {} MPa (gauge), enclosed volume {} mm^3 above the clamp plane",
@@ -302,7 +316,12 @@ std::string full_report(const LoadingCurve& c, const Problem& p) {
   }
   line(out, "stick -> slip switch", switch_text(c, p));
   line(out, "Part II appears", part_two_text(c, p));
+  events_lines(out, c);
   out += full_report(c.puncture);
+  if (c.failure_verdict)
+    line(out,
+         "fails first",
+         fmt::format("{}: {}", to_string(c.failure_verdict->mode), c.failure_verdict->reason));
   const double end = c.points.empty() ? 0.0 : c.points.back().depth_mm;
   if (c.puncture.ok() && c.puncture.depth_mm < end * (1.0 - 1e-9))
     out += "  (the curve continues past the puncture depth)\n";

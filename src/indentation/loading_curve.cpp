@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "indentation/curve_events.hpp"
 #include "indentation/curve_following.hpp"
 #include "indentation/dispatch.hpp"
 #include "indentation/face_slip.hpp"
@@ -62,6 +63,23 @@ std::optional<double> face_outward_from(const Problem& p, const std::vector<Curv
       lo = mid + 1;
   }
   return hi < points.size() ? std::optional<double>(points[hi].depth_mm) : std::nullopt;
+}
+
+// The curve's events, each located by states solved at depths (the public solve: the same
+// states as the curve's, a sealed chamber's included), and the verdict on which failure comes
+// first (which needs the events: neither without CurveOptions::locate_events).
+void add_events(const Problem& p, const CurveOptions& curve, const SolverOptions& options,
+                LoadingCurve& out) {
+  if (!out.ok() || !curve.locate_events) return;
+  const SolverOptions quiet = without_fields(options);
+  const detail::DepthSampler at_depth = [&](double depth_mm,
+                                            Stage stage) -> std::optional<detail::DepthSample> {
+    const Equilibrium e = solve_at_depth(p, depth_mm, stage, quiet);
+    if (!e.ok()) return std::nullopt;
+    return detail::DepthSample{e.force_n, e.contact_edge_radius_mm + e.contact_edge_height_mm};
+  };
+  out.events = detail::located_curve_events(out.points, at_depth);
+  out.failure_verdict = detail::failure_verdict(p, out);
 }
 
 }  // namespace
@@ -133,15 +151,18 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
       auto out = detail::sealed_loading_curve(p, curve, options);
       out.puncture = with_face_slip_checked(p, std::move(out.puncture));
       out.face_slides_outward_from_mm = face_outward_from(p, out.points);
+      add_events(p, curve, options, out);
       return out;
     });
   return detail::reporting_failures<LoadingCurve>([&] {
-    return detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
-      auto out = detail::curve_to_puncture(p, shooting, curve, options);
-      out.puncture = with_face_slip_checked(p, std::move(out.puncture));
-      out.face_slides_outward_from_mm = face_outward_from(p, out.points);
-      return out;
+    auto out = detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
+      auto followed = detail::curve_to_puncture(p, shooting, curve, options);
+      followed.puncture = with_face_slip_checked(p, std::move(followed.puncture));
+      followed.face_slides_outward_from_mm = face_outward_from(p, followed.points);
+      return followed;
     });
+    add_events(p, curve, options, out);
+    return out;
   });
 }
 

@@ -33,6 +33,10 @@ Equilibrium to_physical(const Problem& p, const Contact& contact, const ScaledSo
   e.part_two_top_reference_radius_mm = sol.r_top * big_a;
   e.part_two_length_mm = sol.part_two_length * big_a;
   e.corner_slope_rad = sol.corner_slope;
+  if (sol.configuration != Configuration::Unloaded) {
+    e.contact_edge_radius_mm = sol.edge_radius * big_a;
+    e.contact_edge_height_mm = contact.free_part_inner_height(sol) * big_a;
+  }
   e.corner_tension_ratio = sol.tension_ratio;
   e.max_first_invariant = max_first_invariant_of(sol);
   const LargestFirstInvariant largest = contact.largest_first_invariant(sol);

@@ -45,6 +45,7 @@ struct ScaledSolution {
   double part_three_stretch = 1.0;
   double r_corner = 0.0;         // reference radius of the material at the corner
   double r_top = 0.0;            // reference radius where Part I starts
+  double edge_radius = 0.0;      // ... and its current radius (the contact's edge)
   double part_two_length = 0.0;  // current length of Part II
   double depth = 0.0;
   double corner_slope = 0.0;

@@ -355,6 +355,8 @@ LoadingCurve sealed_loading_curve(const Problem& p, const CurveOptions& curve,
     pt.part_three_stretch = e.part_three_stretch;
     pt.part_two_length_mm = e.part_two_length_mm;
     pt.corner_slope_rad = e.corner_slope_rad;
+    pt.contact_edge_radius_mm = e.contact_edge_radius_mm;
+    pt.contact_edge_height_mm = e.contact_edge_height_mm;
     pt.max_first_invariant = e.max_first_invariant;
     pt.beyond_puncture =
         e.beyond_puncture || (out.puncture.ok() && depth > out.puncture.depth_mm * (1.0 + 1e-9));

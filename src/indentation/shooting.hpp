@@ -452,6 +452,7 @@ class IndentationShooting {
     }
     sol.residual = run.residual;
     sol.r_top = st.r0;
+    sol.edge_radius = st.r0 * st.state[2];
     sol.corner_slope = st.slope;
     sol.tension_ratio = st.ratio;
     sol.edge_s1 = membrane_stress(part_one_.law(), st.state[1], st.state[2]).s1;
