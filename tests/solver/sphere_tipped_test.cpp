@@ -432,6 +432,76 @@ TEST(SphereTipped, ProbeSizesPuncture) {
   for (const double x : scaled) EXPECT_NEAR(x, scaled.front(), 1e-6 * scaled.front());
 }
 
+// Tiny forces solved in turn on one shooting (#17): f = 5e-10, 1e-9, 1e-8 (normalised, F / 2 pi
+// G H A: 0.9 to 19 nN), pole strains 1.6e-5 to 7e-5, where the equator onset's warm start sits
+// near 1.  Each solve must converge without throwing and must not depend on the solves before
+// it: its pole stretch matches a fresh shooting's at the same force to the clamp residual's
+// tolerance (the residual's slope in the pole stretch is O(1), so 10 x shooting_tol on p; it
+// is bit for bit today).  Independently, the depth follows the small-deflection law d ~ f^(1/3)
+// from 1e-9 to 1e-8 (ratio 10^(1/3); measured 0.24 % off: the law holds as f -> 0, and the
+// contact radius grows with the slope ~ f^(1/3); 1 % bound).
+TEST(SphereTipped, TinyForcesInTurnOnOneShooting) {
+  for (const double mu : {0.0, 0.5}) {
+    Problem p = sphere_problem();
+    p.friction = mu;
+    const SolverOptions o;
+    const auto warm = make_shooting(p, o);
+    double last_depth = 0.0;
+    for (const double f : {5e-10, 1e-9, 1e-8}) {
+      ScaledSolution sol;
+      ASSERT_NO_THROW(sol = warm.solve(Stage::Slip, f)) << "mu " << mu << ", f " << f;
+      ASSERT_TRUE(sol.ok()) << "mu " << mu << ", f " << f << ": " << sol.message;
+      const auto cold = make_shooting(p, o).solve(Stage::Slip, f);
+      ASSERT_TRUE(cold.ok()) << cold.message;
+      EXPECT_NEAR(sol.parameter, cold.parameter, 10.0 * o.shooting_tol) << mu << ", " << f;
+      EXPECT_GT(sol.parameter, 1.0);
+      EXPECT_GT(sol.depth, last_depth) << mu << ", " << f;
+      record(fmt::format("warm_cold_pole_stretch_mu{:g}_f{:g}", mu, f),
+             std::abs(sol.parameter - cold.parameter));
+      if (f == 1e-8) EXPECT_NEAR(sol.depth / last_depth, std::cbrt(10.0), 1e-2 * std::cbrt(10.0));
+      last_depth = sol.depth;
+    }
+  }
+}
+
+// A probe of radius 20 mm on the 25 mm membrane (#17): its equator lies past the clamp for the
+// barely stretched membrane, so the cap never ends there at these forces; the states, with the
+// contact on the hemisphere, were refused as "beyond locking" up to f = 0.3 at least.  They
+// exist: each converges in the configuration without the side, frictionless and at mu = 0.5,
+// and the frictionless ones obey work conjugacy dU/ddelta = F (four-point differences, step
+// 1e-3 f, as WorkConjugacyAtSeveralDepths: 1e-6 bound), which a wrong contact edge would miss.
+TEST(SphereTipped, LargeProbeContactEndsOnTheHemisphere) {
+  for (const double mu : {0.0, 0.5}) {
+    Problem p = sphere_problem(Gent{125.0}, 20.0);
+    p.friction = mu;
+    const auto shooting = make_shooting(p, test::tight_options());
+    double last_depth = 0.0;
+    for (const double f : {1e-6, 1e-3, 1e-2, 0.1, 0.3}) {
+      const auto sol = shooting.solve(Stage::Slip, f);
+      ASSERT_TRUE(sol.ok()) << "mu " << mu << ", f " << f << ": " << sol.message;
+      EXPECT_EQ(sol.configuration, Configuration::SlipWithoutPartTwo) << mu << ", " << f;
+      EXPECT_GT(sol.depth, last_depth) << mu << ", " << f;
+      last_depth = sol.depth;
+      if (mu != 0.0 || f < 1e-2) continue;
+      const double h = 1e-3 * f;
+      std::vector<EnergyAndDepth> s;
+      for (const double k : {-2.0, -1.0, 1.0, 2.0}) {
+        const auto e = energy_at(shooting, f + k * h);
+        ASSERT_TRUE(e.has_value()) << "f = " << f + k * h;
+        s.push_back(*e);
+      }
+      auto derivative = [&](auto value) {
+        return (value(s[0]) - 8.0 * value(s[1]) + 8.0 * value(s[2]) - value(s[3])) / (12.0 * h);
+      };
+      const double du = derivative([](const EnergyAndDepth& e) { return e.energy; });
+      const double dd = derivative([](const EnergyAndDepth& e) { return e.depth; });
+      const double relative = std::abs(du / dd - f) / f;
+      EXPECT_LT(relative, 1e-6) << "f = " << f;
+      record(fmt::format("large_probe_dU_ddelta_relative_error_f{:g}", f), relative);
+    }
+  }
+}
+
 // The other laws run through the same contact model (dispatch), to puncture.
 TEST(SphereTipped, EveryLawPunctures) {
   for (const MaterialLaw law : {MaterialLaw{NeoHookean{}}, MaterialLaw{MooneyRivlin{0.1}}}) {

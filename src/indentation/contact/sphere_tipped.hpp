@@ -521,6 +521,11 @@ class SphereTippedContact {
     // hemisphere, >= 0 once it wraps the cylinder side.
     const auto onset = equator_onset(f);
     if (!onset && pressure_ > 0.0 && f <= gas_load(kHalfPiCap)) return hemisphere_plan(f, counted);
+    // A large probe (a above ~2 A / pi: 16.7 mm on A = 25 mm) puts its equator past the clamp
+    // for the barely stretched membrane, and no cap reaching it inside the clamp carries just f
+    // there: no onset, yet no locking either.  The contact ends on the hemisphere.
+    if (!onset && !march(1.0 + kBarelyStretched, std::numeric_limits<double>::infinity()))
+      return edge_on_cap_plan(f, lowest_carrying_stretch(f), kBeyondDomain, counted);
     if (!onset) {
       plan.status = Status::BeyondLocking;
       plan.message = cone() ? "no pole stretch lets the cone probe's tip and cone carry this force "
@@ -567,14 +572,45 @@ class SphereTippedContact {
           "condition";
       return plan;
     }
-    // The contact ends on the hemisphere.  The shooting needs a pole stretch whose cap carries f
-    // before the equator with a negative clamp residual: the onset's, unless R s1 sin(theta)
-    // peaks on the way (the hoop stretch falls below 1 towards the equator at small stretches)
-    // and reaches f earlier.  Then stretches 1 + (onset - 1) / 2^k are tried downward: any
-    // carrying one with a negative residual lies below the root and will do; past the lowest
-    // carrying stretch, a bisection on whether the force is carried before the equator finds it.
-    double hi = onset->stretch;
-    double g_hi = g_onset;
+    return edge_on_cap_plan(f, onset->stretch, g_onset, counted);
+  }
+
+  // A pole stretch a little above 1: its cap reaches the equator inside the clamp unless the
+  // probe is large.
+  static constexpr double kBarelyStretched = 1e-6;
+
+  // The smallest of the pole stretches 1 + 2^k kBarelyStretched whose cap carries f inside the
+  // clamp, before the equator (the large probe's); 0 if none does before the material locks.
+  double lowest_carrying_stretch(double f) const {
+    for (int k = 0; k < 60; ++k) {
+      const double l = 1.0 + std::ldexp(kBarelyStretched, k);
+      if (!(first_invariant(l, l) < locking_i1_)) break;
+      const auto end = march(l, f);
+      if (end && !end->at_equator) return l;
+    }
+    return 0.0;
+  }
+
+  // The contact ends on the hemisphere.  The shooting needs a pole stretch whose cap carries f
+  // before the equator with a negative clamp residual: `top` (the onset's, with residual
+  // g_top), unless R s1 sin(theta) peaks on the way (the hoop stretch falls below 1 towards the
+  // equator at small stretches) and reaches f earlier.  Then stretches 1 + (top - 1) / 2^k are
+  // tried downward: any carrying one with a negative residual lies below the root and will do;
+  // past the lowest carrying stretch, a bisection on whether the force is carried before the
+  // equator finds it.
+  template <class Residual>
+  ShootingPlan edge_on_cap_plan(double f, double top, double g_top, Residual& counted) const {
+    ShootingPlan plan;
+    plan.configuration = Configuration::SlipWithoutPartTwo;
+    if (!(top > 1.0)) {
+      plan.status = Status::BeyondLocking;
+      plan.message =
+          "no pole stretch lets the sphere-tipped probe carry this force before the "
+          "material locks";
+      return plan;
+    }
+    double hi = top;
+    double g_hi = g_top;
     const auto carried = [&](double l) {
       const auto end = march(l, f);
       return end && !end->at_equator;
@@ -583,7 +619,7 @@ class SphereTippedContact {
       double lo = 1.0;
       bool bracketed = false;
       for (int k = 1; k <= 60; ++k) {
-        const double l = 1.0 + (onset->stretch - 1.0) / std::ldexp(1.0, k);
+        const double l = 1.0 + (top - 1.0) / std::ldexp(1.0, k);
         if (!carried(l)) {
           lo = l;
           break;
