@@ -68,7 +68,8 @@ struct PuncturePrediction : Outcome {
   std::optional<double> part_two_top_stretch;
   // With SolverOptions::failure_verdict, for a pre-tensioned membrane: which failure comes first,
   // the loading curve's verdict (LoadingCurve::failure_verdict, whose own puncture leaves this
-  // empty).  Empty for a membrane mounted stress-free, or if the curve could not be followed.
+  // empty).  Empty for a membrane mounted stress-free, without a puncture found, or if the
+  // curve could not be followed.
   std::optional<FailureVerdict> failure_verdict;
   Equilibrium state;  // the full state at puncture
 };
