@@ -720,6 +720,10 @@ void bind_problem(py::module_& m) {
                      &SolverOptions::energy_to_puncture,
                      "fill PuncturePrediction.energy_to_puncture_mj (costs about a third of a "
                      "200-point curve)")
+      .def_readwrite("failure_verdict",
+                     &SolverOptions::failure_verdict,
+                     "fill PuncturePrediction.failure_verdict for a pre-tensioned membrane "
+                     "(follows the 200-point loading curve)")
       .def_readwrite("puncture_top_stretch_start",
                      &SolverOptions::puncture_top_stretch_start,
                      "a warm start: a neighbouring problem's PuncturePrediction."
@@ -729,7 +733,7 @@ void bind_problem(py::module_& m) {
         return fmt::format(
             "SolverOptions(integration_rel_tol={:g}, integration_abs_tol={:g}, shooting_tol={:g}, "
             "curve_tol={:g}, field_points={}, max_shooting_iterations={}, max_steps={}, "
-            "record_fields={}, energy_to_puncture={})",
+            "record_fields={}, energy_to_puncture={}, failure_verdict={})",
             s.integration_rel_tol,
             s.integration_abs_tol,
             s.shooting_tol,
@@ -738,7 +742,8 @@ void bind_problem(py::module_& m) {
             s.max_shooting_iterations,
             s.max_steps,
             s.record_fields,
-            s.energy_to_puncture);
+            s.energy_to_puncture,
+            s.failure_verdict);
       });
   copyable(options);
 }

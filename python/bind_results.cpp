@@ -287,6 +287,10 @@ void bind_results(py::module_& m) {
                     "the hoop stretch at the top of Part II when the puncture was solved at the "
                     "corner (else None): a neighbouring problem's "
                     "SolverOptions.puncture_top_stretch_start")
+      .def_readonly("failure_verdict",
+                    &PuncturePrediction::failure_verdict,
+                    "a pre-tensioned membrane: which failure comes first (FailureVerdict; asked "
+                    "by SolverOptions.failure_verdict), else None")
       .def_property_readonly(
           "state",
           [](py::object self) { return member_with_problem(self, &PuncturePrediction::state); },

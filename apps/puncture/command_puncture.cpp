@@ -17,6 +17,7 @@ std::string run_puncture(const Problem& problem, Format format, const std::strin
     progress.note("locating the puncture point");
     SolverOptions options;
     options.energy_to_puncture = true;
+    options.failure_verdict = true;  // a pre-tensioned membrane's: which failure comes first
     if (test == kAstmF1306) {
       // The standard's maximum force is the curve's: the puncture's with the loading curve.
       const auto curve = loading_curve(problem, CurveOptions{}, options);
@@ -26,6 +27,7 @@ std::string run_puncture(const Problem& problem, Format format, const std::strin
         report.puncture.message = curve.message;
       } else if (curve.puncture.ok()) {
         report.astm_f1306 = astm_f1306_outputs(curve);
+        report.puncture.failure_verdict = curve.failure_verdict;
       }
     } else {
       report.puncture = predict_puncture(problem, options);

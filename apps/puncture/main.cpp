@@ -122,7 +122,10 @@ int main(int argc, char** argv) {
         "state", "Equilibrium at --force N or --depth MM, with every field along the membrane");
     state->footer(kSubcommandFooter);
     add_state_options(*state, state_flags);
-    auto* puncture = app.add_subcommand("puncture", "The predicted puncture point alone");
+    auto* puncture = app.add_subcommand(
+        "puncture",
+        "The predicted puncture point alone (inflated or pre-stretched: which failure comes\n"
+        "first, local puncture or global, from the loading curve)");
     puncture->footer(kSubcommandFooter);
     FiguresFlags figures_flags;
     auto* figures = app.add_subcommand(

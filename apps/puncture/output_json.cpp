@@ -19,11 +19,22 @@ json inputs_json(const Problem& p) {
   return out;
 }
 
+// Which failure comes first (docs/model.md §8.1).
+json failure_verdict_json(const FailureVerdict& v) {
+  return {{"mode", to_token(v.mode)},
+          {"depth_mm", finite(v.depth_mm, "first failure depth")},
+          {"force_n", finite(v.force_n, "first failure force")},
+          {"where", v.where},
+          {"reason", v.reason}};
+}
+
 json puncture_json(const PuncturePrediction& p, const Problem& problem) {
   if (!p.ok()) return {{"found", false}, {"message", p.message}};
   json out = rows_json(puncture_table(p)).at(0);
   out["found"] = true;
   if (!problem.criteria.empty()) out["criterion"] = p.criterion;
+  // Written only when there is one (a pre-tensioned membrane).
+  if (p.failure_verdict) out["failure_verdict"] = failure_verdict_json(*p.failure_verdict);
   return out;
 }
 
@@ -140,12 +151,7 @@ json curve_json(const CurveReport& r) {
            {"description", e.description}});
     out["events"] = events;
   }
-  if (const auto& v = c.failure_verdict)
-    out["failure_verdict"] = {{"mode", to_token(v->mode)},
-                              {"depth_mm", finite(v->depth_mm, "first failure depth")},
-                              {"force_n", finite(v->force_n, "first failure force")},
-                              {"where", v->where},
-                              {"reason", v->reason}};
+  if (c.failure_verdict) out["failure_verdict"] = failure_verdict_json(*c.failure_verdict);
   // A flat punch under a gas pressure with friction: the points before it are not the membrane's
   // states (its face slides inward there).
   if (std::holds_alternative<FlatPunch>(r.problem.indenter) &&

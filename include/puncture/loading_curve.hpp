@@ -66,6 +66,11 @@ struct PuncturePrediction : Outcome {
   // corner (flat punch, sliding with Part II): where a neighbouring problem's search can start
   // (SolverOptions::puncture_top_stretch_start).  Empty otherwise.
   std::optional<double> part_two_top_stretch;
+  // With SolverOptions::failure_verdict, for a pre-tensioned membrane: which failure comes first,
+  // the loading curve's verdict (LoadingCurve::failure_verdict, whose own puncture leaves this
+  // empty).  Empty for a membrane mounted stress-free, without a puncture found, or if the
+  // curve could not be followed.
+  std::optional<FailureVerdict> failure_verdict;
   Equilibrium state;  // the full state at puncture
 };
 

@@ -23,6 +23,10 @@ struct SolverOptions {
   // Fill PuncturePrediction::energy_to_puncture_mj, the area under the force-depth curve to
   // puncture: it costs about a third of a 200-point loading curve, so it is off unless asked.
   bool energy_to_puncture = false;
+  // Fill PuncturePrediction::failure_verdict for a pre-tensioned membrane (pressure, sealed gas
+  // or pre-stretch): it follows the 200-point loading curve to find its force maxima, about as
+  // costly as the puncture itself, so it is off unless asked (docs/model.md §8.1).
+  bool failure_verdict = false;
   // A warm start for the puncture search: the hoop stretch at the top of Part II [-] of a
   // neighbouring problem's puncture (PuncturePrediction::part_two_top_stretch).  The flat punch's
   // corner solve polishes its root from there instead of bracketing it; the puncture then agrees

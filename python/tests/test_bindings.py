@@ -493,3 +493,25 @@ def test_curve_events_and_failure_verdict_match_cli(cli):
     # A membrane mounted stress-free has no verdict.
     assert pu.loading_curve(pu.Problem(), points=5).failure_verdict is None
     assert pu.CurveEventKind.ForceMaximum.token == "force_maximum"
+
+
+def test_puncture_failure_verdict_is_the_curves_and_the_clis(cli):
+    # predict_puncture gives the loading curve's verdict when asked (SolverOptions.failure_verdict)
+    # and the `puncture` command's JSON writes it; none for a membrane mounted stress-free.
+    problem = pu.Problem(indenter=pu.SphereTipped(radius_mm=2.0), friction=0.0,
+                         preload=pu.Preload(pressure_mpa=3e-4))
+    assert pu.predict_puncture(problem).failure_verdict is None  # off unless asked
+    options = pu.SolverOptions()
+    options.failure_verdict = True
+    prediction = pu.predict_puncture(problem, options)
+    verdict = prediction.failure_verdict
+    assert verdict.mode == pu.FailureMode.LocalPuncture
+    assert verdict.depth_mm == prediction.depth_mm
+    assert verdict.depth_mm == pu.loading_curve(problem).failure_verdict.depth_mm
+    from_cli = cli.json("puncture", "--indenter", "sphere-tipped", "--indenter-radius", "2",
+                        "--friction", "0", "--pressure", "3e-4")["puncture"]
+    assert from_cli["failure_verdict"]["mode"] == "local_puncture"
+    assert rel(verdict.depth_mm, from_cli["failure_verdict"]["depth_mm"]) < 1e-9
+    assert verdict.reason == from_cli["failure_verdict"]["reason"]
+    assert pu.predict_puncture(pu.Problem(), options).failure_verdict is None
+    assert "failure_verdict" not in cli.json("puncture")["puncture"]

@@ -301,10 +301,12 @@ std::vector<CurveEvent> located_curve_events(const std::vector<CurvePoint>& poin
   return out;
 }
 
+bool pretensioned(const Problem& p) {
+  return p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3 || p.preload.prestretch != 1.0;
+}
+
 std::optional<FailureVerdict> failure_verdict(const Problem& p, const LoadingCurve& curve) {
-  const bool pretensioned =
-      p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3 || p.preload.prestretch != 1.0;
-  if (!pretensioned) return std::nullopt;
+  if (!pretensioned(p)) return std::nullopt;
   const PuncturePrediction& puncture = curve.puncture;
   const auto limit =
       std::find_if(curve.events.begin(), curve.events.end(), [&](const CurveEvent& e) {

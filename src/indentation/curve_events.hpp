@@ -29,6 +29,10 @@ inline double contact_reach_mm(const CurvePoint& q) {
 std::vector<CurveEvent> located_curve_events(const std::vector<CurvePoint>& points,
                                              const DepthSampler& at_depth);
 
+// Pre-tensioned: inflated (held pressure or sealed gas) or pre-stretched, the membranes that
+// get a failure verdict.
+bool pretensioned(const Problem& p);
+
 // The verdict for a pre-tensioned membrane (pressure, sealed gas or pre-stretch), from its
 // curve's events and its puncture; empty for a membrane mounted stress-free or without a
 // puncture.

@@ -74,6 +74,11 @@ void events_lines(std::string& out, const LoadingCurve& c) {
 }
 
 // A sealed chamber's gas in a state.
+// "fails first": the mode and why (docs/model.md §8.1).
+std::string failure_verdict_text(const FailureVerdict& v) {
+  return fmt::format("{}: {}", to_string(v.mode), v.reason);
+}
+
 std::string gas_text(const ChamberGas& gas) {
   return fmt::format("pressure {} MPa (gauge), enclosed volume {} mm^3 above the clamp plane",
                      num(gas.pressure_mpa),
@@ -283,6 +288,7 @@ std::string full_report(const PuncturePrediction& p) {
        fmt::format("reference radius R = {} mm, current radius r = {} mm",
                    num(p.crack_reference_radius_mm),
                    num(p.crack_radius_mm)));
+  if (p.failure_verdict) line(out, "fails first", failure_verdict_text(*p.failure_verdict));
   return out;
 }
 
@@ -318,10 +324,7 @@ std::string full_report(const LoadingCurve& c, const Problem& p) {
   line(out, "Part II appears", part_two_text(c, p));
   events_lines(out, c);
   out += full_report(c.puncture);
-  if (c.failure_verdict)
-    line(out,
-         "fails first",
-         fmt::format("{}: {}", to_string(c.failure_verdict->mode), c.failure_verdict->reason));
+  if (c.failure_verdict) line(out, "fails first", failure_verdict_text(*c.failure_verdict));
   const double end = c.points.empty() ? 0.0 : c.points.back().depth_mm;
   if (c.puncture.ok() && c.puncture.depth_mm < end * (1.0 - 1e-9))
     out += "  (the curve continues past the puncture depth)\n";

@@ -121,13 +121,32 @@ PuncturePrediction puncture_on_path(const Problem& p, const SolverOptions& optio
 
 }  // namespace detail
 
+namespace {
+
+// The loading curve's verdict (SolverOptions::failure_verdict): the curve to puncture on the
+// default grid, its events located, so the prediction's verdict is the curve's to the last bit.
+void add_failure_verdict(const Problem& p, const SolverOptions& options, PuncturePrediction& out) {
+  if (!options.failure_verdict || !out.ok() || !detail::pretensioned(p)) return;
+  SolverOptions along = options;
+  along.energy_to_puncture = false;
+  along.failure_verdict = false;
+  const LoadingCurve curve = loading_curve(p, CurveOptions{}, along);
+  if (curve.ok()) out.failure_verdict = curve.failure_verdict;
+}
+
+}  // namespace
+
 PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& options) {
   validate(p);
   check_warm_start(options);
-  if (!p.preload.gas_volume_mm3) return detail::puncture_on_path(p, options, true);
-  return with_face_slip_checked(p, detail::reporting_failures<PuncturePrediction>([&] {
-                                  return detail::sealed_puncture(p, options);
-                                }));
+  PuncturePrediction out =
+      !p.preload.gas_volume_mm3
+          ? detail::puncture_on_path(p, options, true)
+          : with_face_slip_checked(p, detail::reporting_failures<PuncturePrediction>([&] {
+                                     return detail::sealed_puncture(p, options);
+                                   }));
+  add_failure_verdict(p, options, out);
+  return out;
 }
 
 LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,

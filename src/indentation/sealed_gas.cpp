@@ -15,6 +15,7 @@
 #include "indentation/inflated_dome.hpp"
 #include "indentation/path_puncture.hpp"
 #include "indentation/reported_failure.hpp"
+#include "indentation/sealed_global_limit.hpp"
 #include "indentation/solver_scales.hpp"
 #include "indentation/stored_energy.hpp"
 
@@ -33,6 +34,13 @@ struct AtPressure {
 struct TrialFailed {
   Status status;
   std::string message;
+};
+
+// Where a search upward stopped: the gas law's root lies above `passed_mpa` (its residual is
+// negative there), and the trial pressure just above it, `failed_mpa`, has no state.
+struct GasLawStop {
+  double passed_mpa = 0.0;
+  double failed_mpa = 0.0;
 };
 
 SolverOptions with_fields(SolverOptions o) {
@@ -63,8 +71,11 @@ void measure_from_sealed_pole(Equilibrium& e, double lift, double pressure_mpa, 
 // The residual (p + p_atm)(V0 + V(p)) - C grows with p (a higher pressure lifts the membrane),
 // so from any p the gas law's fixed point p' = C / (V0 + V(p)) - p_atm lies across the root: one
 // step brackets it, TOMS 748 refines it.  The evaluated result nearest the law is returned.
+// `stop`, if given, is set when the search stops on its way up (a trial halved back 40 times
+// still fails).
 template <class Result, class Evaluate>
-Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate) {
+Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate,
+                  std::optional<GasLawStop>* stop = nullptr) {
   const double floor = c.sealed_pressure_mpa, p_atm = c.atmospheric_pressure_mpa;
   std::optional<AtPressure<Result>> best;
   double best_residual = std::numeric_limits<double>::infinity();
@@ -117,6 +128,7 @@ Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate) {
           g_hi = residual(hi);
           break;
         } catch (const TrialFailed&) {
+          if (halving == 40 && hi > lo && g_lo < 0.0 && stop != nullptr) *stop = GasLawStop{lo, hi};
           if (hi < lo || halving == 40) throw;
           hi = lo + 0.5 * (hi - lo);
         }
@@ -291,25 +303,34 @@ PuncturePrediction sealed_puncture(const Problem& p, const SolverOptions& option
   const SealedChamber c = sealed_chamber(p, options);
   SolverOptions search = options;
   search.energy_to_puncture = false;
-  auto out = at_gas_law<PuncturePrediction>(c, c.sealed_pressure_mpa, [&](double pressure) {
-    const Problem held = at_held_pressure(p, pressure);
-    AtPressure<PuncturePrediction> at{puncture_on_path(held, search, false)};
-    if (!at.result.ok()) return at;
-    // The puncture state with its fields, for its volume.
-    Equilibrium state =
-        solve_at_force(held, at.result.force_n, at.result.stage, with_fields(options));
-    if (!state.ok()) {
-      at.result.status = state.status;
-      at.result.message = "the state at puncture: " + state.message;
-      return at;
-    }
-    const double lift = dome_height_mm(held, options) - c.sealed_height_mm;
-    at.volume_mm3 = enclosed_volume_mm3(state.fields);
-    measure_from_sealed_pole(state, lift, pressure, at.volume_mm3, options.record_fields);
-    at.result.depth_mm -= lift;
-    at.result.state = std::move(state);
-    return at;
-  });
+  std::optional<GasLawStop> stop;
+  auto out = at_gas_law<PuncturePrediction>(
+      c,
+      c.sealed_pressure_mpa,
+      [&](double pressure) {
+        const Problem held = at_held_pressure(p, pressure);
+        AtPressure<PuncturePrediction> at{puncture_on_path(held, search, false)};
+        if (!at.result.ok()) return at;
+        // The puncture state with its fields, for its volume.
+        Equilibrium state =
+            solve_at_force(held, at.result.force_n, at.result.stage, with_fields(options));
+        if (!state.ok()) {
+          at.result.status = state.status;
+          at.result.message = "the state at puncture: " + state.message;
+          return at;
+        }
+        const double lift = dome_height_mm(held, options) - c.sealed_height_mm;
+        at.volume_mm3 = enclosed_volume_mm3(state.fields);
+        measure_from_sealed_pole(state, lift, pressure, at.volume_mm3, options.record_fields);
+        at.result.depth_mm -= lift;
+        at.result.state = std::move(state);
+        return at;
+      },
+      &stop);
+  // Stopped on the way up by an overhanging dome: said as the global failure it heads for.
+  if (!out.ok() && out.status == Status::OutsideModel && stop)
+    if (const auto why = heading_for_global_limit(p, options, stop->passed_mpa, stop->failed_mpa))
+      out.message = *why + " (" + out.message + ")";
   if (out.ok() && options.energy_to_puncture) add_sealed_energy_to_puncture(p, c, options, out);
   return out;
 }

@@ -263,5 +263,41 @@ TEST(CurveEvents, VerdictIsGlobalForALimitPointOrACrackInTheFreeDome) {
   EXPECT_FALSE(detail::failure_verdict(paper_problem(), curve).has_value());  // stress-free
 }
 
+// The puncture prediction's verdict is the loading curve's (one rule: the prediction follows the
+// curve for it), asked by SolverOptions::failure_verdict: the inflated membrane and a 2 mm sphere
+// (3e-4 MPa, frictionless) puncture locally at the prediction's own depth; a membrane mounted
+// stress-free has none.
+TEST(CurveEvents, PredictionGivesTheCurvesVerdictWhenAsked) {
+  const Problem p = pressurised(kPressureMpa, 0.0, SphereTipped{2.0});
+  EXPECT_FALSE(predict_puncture(p).failure_verdict.has_value());  // off unless asked
+  SolverOptions asked;
+  asked.failure_verdict = true;
+  const PuncturePrediction prediction = predict_puncture(p, asked);
+  ASSERT_TRUE(prediction.ok()) << prediction.message;
+  ASSERT_TRUE(prediction.failure_verdict.has_value());
+  const FailureVerdict& v = *prediction.failure_verdict;
+  EXPECT_EQ(v.mode, FailureMode::LocalPuncture) << v.reason;
+  const LoadingCurve curve = loading_curve(p);
+  ASSERT_TRUE(curve.ok()) << curve.message;
+  ASSERT_TRUE(curve.failure_verdict.has_value());
+  EXPECT_EQ(v.mode, curve.failure_verdict->mode);
+  EXPECT_EQ(v.depth_mm, curve.failure_verdict->depth_mm);
+  EXPECT_EQ(v.force_n, curve.failure_verdict->force_n);
+  EXPECT_EQ(v.reason, curve.failure_verdict->reason);
+  EXPECT_FALSE(curve.puncture.failure_verdict.has_value());  // the curve's is LoadingCurve's
+  // The curve's puncture is the prediction's own search: the same depth and force.
+  EXPECT_EQ(v.depth_mm, prediction.depth_mm);
+  EXPECT_EQ(v.force_n, prediction.force_n);
+  EXPECT_NEAR(prediction.depth_mm, 36.551, 5e-4);  // docs/model.md §8.1's table
+
+  const PuncturePrediction stress_free = predict_puncture(paper_problem(), asked);
+  ASSERT_TRUE(stress_free.ok()) << stress_free.message;
+  EXPECT_FALSE(stress_free.failure_verdict.has_value());
+  EXPECT_FALSE(detail::pretensioned(paper_problem()));
+  Problem stretched = paper_problem();
+  stretched.preload.prestretch = 1.2;
+  EXPECT_TRUE(detail::pretensioned(stretched));
+}
+
 }  // namespace
 }  // namespace puncture::test
