@@ -42,8 +42,8 @@ struct Equilibrium : Outcome {
   // tip [mm].
   double contact_edge_radius_mm = 0.0;
   double contact_edge_height_mm = 0.0;
-  double corner_tension_ratio = 1.0;              // s1 just outside the corner / s1 in Part III
-  double max_first_invariant = 3.0;  // largest I1 in the membrane: where a crack starts
+  double corner_tension_ratio = 1.0;  // s1 just outside the corner / s1 in Part III
+  double max_first_invariant = 3.0;   // largest I1 in the membrane: where a crack starts
   double max_first_invariant_reference_radius_mm = 0.0;        // where it is: reference radius R
   double max_first_invariant_radius_mm = 0.0;                  // ... and current radius r
   MembranePart max_first_invariant_part = MembranePart::Free;  // ... in this part
