@@ -245,7 +245,11 @@ class SphereStickHistory {
       points_.push_back({r_next, theta, e->l1, e->f, e->height + a_ * (1.0 - std::cos(theta))});
     }
   }
-  // One classical Runge-Kutta step of dtheta/dR = lambda1_edge / a.
+  // One classical Runge-Kutta step of dtheta/dR = lambda1_edge / a.  Written out rather than
+  // Odeint's runge_kutta4 because each slope is a shooting that may find no state (the material
+  // locks): the step must end with "no state", which Odeint's steppers can only get through an
+  // exception.  Moving it to Odeint with such an exception is a refactor to check against the
+  // stick tests.
   std::optional<double> rk4_step(double r, double theta, double dr) const {
     auto slope = [&](double at, double th) -> std::optional<double> {
       if (!(th < 0.5 * kPi)) return std::nullopt;
