@@ -21,6 +21,7 @@
 #include "indentation/dispatch.hpp"
 #include "indentation/shooting.hpp"
 #include "mechanics/inverse_stretch.hpp"
+#include "numerics/trapezoid.hpp"
 #include "puncture/equilibrium.hpp"
 #include "puncture/loading_curve.hpp"
 #include "solver_test_support.hpp"
@@ -288,15 +289,7 @@ double side_state_axial_resultant_n(const Equilibrium& e, const Problem& p) {
                    m.friction_traction_mpa[i] * std::sin(theta)) *
                   m.radius_mm[i] * m.radial_stretch[i]);
     }
-    auto trapezoid = [&](std::size_t stride) {
-      double sum = 0.0;
-      std::size_t i = 0;
-      for (; i + stride < r.size(); i += stride)
-        sum += 0.5 * (y[i] + y[i + stride]) * (r[i + stride] - r[i]);
-      if (i + 1 < r.size()) sum += 0.5 * (y[i] + y.back()) * (r.back() - r[i]);
-      return sum;
-    };
-    const double fine = trapezoid(1), coarse = trapezoid(2);
+    const double fine = detail::trapezoid(r, y, 1), coarse = detail::trapezoid(r, y, 2);
     axial_n += 2.0 * test::kPi * (fine + (fine - coarse) / 3.0);
   }
   // R s1 [MPa mm] across the equator and the first step up the side.

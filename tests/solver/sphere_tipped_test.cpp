@@ -20,6 +20,7 @@
 #include "indentation/shooting.hpp"
 #include "mechanics/free_membrane_ode.hpp"
 #include "mechanics/inverse_stretch.hpp"
+#include "numerics/trapezoid.hpp"
 #include "puncture/finite_element.hpp"
 #include "solver_test_support.hpp"
 #include "sphere_model_energy.hpp"
@@ -176,15 +177,7 @@ TEST(SphereTipped, ContactPressureCarriesTheForce) {
       y.push_back(pressure * std::cos(theta) * a * std::sin(theta) * l1);
     }
     ASSERT_GE(r.size(), 20u);
-    auto trapezoid = [&](std::size_t stride) {
-      double sum = 0.0;
-      std::size_t i = 0;
-      for (; i + stride < r.size(); i += stride)
-        sum += 0.5 * (y[i] + y[i + stride]) * (r[i + stride] - r[i]);
-      if (i + 1 < r.size()) sum += 0.5 * (y[i] + y.back()) * (r.back() - r[i]);
-      return sum;
-    };
-    const double fine = trapezoid(1), coarse = trapezoid(2);
+    const double fine = detail::trapezoid(r, y, 1), coarse = detail::trapezoid(r, y, 2);
     const double resultant = fine + (fine - coarse) / 3.0;
     EXPECT_NEAR(resultant, f, 1e-6 * f) << to_token(sol.configuration);
     record(fmt::format("pressure_resultant_relative_error_f{:g}", f),
@@ -344,15 +337,7 @@ TEST(SphereTipped, CoulombSlipOnTheHemisphere) {
                    m.friction_traction_mpa[i] * std::sin(theta)) *
                   m.radius_mm[i] * m.radial_stretch[i]);
     }
-    auto trapezoid = [&](std::size_t stride) {
-      double sum = 0.0;
-      std::size_t i = 0;
-      for (; i + stride < r.size(); i += stride)
-        sum += 0.5 * (y[i] + y[i + stride]) * (r[i + stride] - r[i]);
-      if (i + 1 < r.size()) sum += 0.5 * (y[i] + y.back()) * (r.back() - r[i]);
-      return sum;
-    };
-    const double fine = trapezoid(1), coarse = trapezoid(2);
+    const double fine = detail::trapezoid(r, y, 1), coarse = detail::trapezoid(r, y, 2);
     const double axial_n = 2.0 * test::kPi * (fine + (fine - coarse) / 3.0);  // N
     EXPECT_NEAR(axial_n, e.force_n, 1e-6 * e.force_n) << "mu " << mu;
     std::cout << fmt::format(
