@@ -30,8 +30,7 @@ inline void append_ball_errors(std::vector<ValidationError>& errors, const Ball&
                                   rb)});
 }
 
-inline void append_cone_errors(std::vector<ValidationError>& errors, const Cone& cone,
-                               const Problem& p) {
+inline void append_cone_errors(std::vector<ValidationError>& errors, const Cone& cone) {
   const double alpha = cone.half_angle_deg, rt = cone.tip_radius_mm;
   const bool angle_ok = std::isfinite(alpha) && alpha > 0.0 && alpha < 90.0;
   if (!angle_ok)
@@ -57,17 +56,13 @@ inline void append_cone_errors(std::vector<ValidationError>& errors, const Cone&
                                     cone.radius_mm,
                                     cone.radius_mm / std::cos(alpha * std::numbers::pi / 180.0))});
   }
-  if (p.preload.pressure_mpa != 0.0 || p.preload.gas_volume_mm3)
-    errors.push_back({"preload.pressure_mpa",
-                      "the cone probe is solved without a gas pressure under the membrane so "
-                      "far: pressure must be 0 and no gas volume given"});
 }
 
 // The ball's and the cone's dimensions; both slide only, like the sphere-tipped probe.
 inline void append_probe_shape_errors(std::vector<ValidationError>& errors, const Problem& p) {
   if (const auto* ball = std::get_if<Ball>(&p.indenter))
     append_ball_errors(errors, *ball, p.geometry.clamp_radius_mm);
-  if (const auto* cone = std::get_if<Cone>(&p.indenter)) append_cone_errors(errors, *cone, p);
+  if (const auto* cone = std::get_if<Cone>(&p.indenter)) append_cone_errors(errors, *cone);
   if ((std::holds_alternative<Ball>(p.indenter) || std::holds_alternative<Cone>(p.indenter)) &&
       p.stick.rule != StickRule::None)
     errors.push_back({"stick.rule",

@@ -295,8 +295,8 @@ void throw_if_invalid(const char* heading, const std::vector<ValidationError>& e
   if (!errors.empty()) throw InvalidInput(errors, heading);
 }
 
-// The flat punch's corner fillet: 0 <= rho < a; a rounded corner is solved sliding, without a
-// gas pressure, for now (docs/model.md §19).
+// The flat punch's corner fillet: 0 <= rho < a; a rounded corner is solved sliding, also under a
+// gas pressure (docs/model.md §17, §19).
 void append_fillet_errors(std::vector<ValidationError>& errors, const Problem& p) {
   const auto* punch = std::get_if<FlatPunch>(&p.indenter);
   if (!punch) return;
@@ -322,10 +322,6 @@ void append_fillet_errors(std::vector<ValidationError>& errors, const Problem& p
                       fmt::format("the stick stage on the filleted flat punch is not implemented "
                                   "yet: stick rule must be 'none', got '{}'",
                                   to_string(p.stick.rule))});
-  if (p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3)
-    errors.push_back({p.preload.gas_volume_mm3 ? "preload.gas_volume_mm3" : "preload.pressure_mpa",
-                      "a gas pressure under the membrane is not implemented yet for the filleted "
-                      "flat punch: give a fillet radius of 0 (the sharp corner) or no gas"});
 }
 
 // Preload::inflated_state: 1, k >= 1 or the last; another than the first needs a held pressure

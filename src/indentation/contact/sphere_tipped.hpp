@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "indentation/contact/contact_model.hpp"
+#include "indentation/contact/fillet_face_under_gas.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
 #include "indentation/contact/sphere_stick.hpp"
 #include "indentation/free_part.hpp"
@@ -118,10 +119,10 @@ struct SphereCapSystem {
     dx[2] = strain_energy_density(law, l1, l2, st.i1) * r_ref;
   }
 
-  // On the cone (no gas): a straight meridian at the slope `tangency`, r = a (sin(tangency) +
-  // (psi - tangency) cos(tangency)); the meridian's curvature is 0, so the contact pressure is the
-  // hoop tension's alone, p r lambda1 = s2 sin(slope), and d(R s1)/dR = s2 (cos(slope) + mu
-  // sin(slope)) (docs/model.md, §15.2).
+  // On the cone: a straight meridian at the slope `tangency`, r = a (sin(tangency) + (psi -
+  // tangency) cos(tangency)); the meridian's curvature is 0, so the contact pressure is the hoop
+  // tension's and the gas's, p r lambda1 = s2 sin(slope) + P r lambda1, and d(R s1)/dR = s2
+  // (cos(slope) + mu sin(slope)) + mu P r lambda1 (docs/model.md, §15.2, §17).
   void on_cone(const SphereCapState& x, SphereCapState& dx, double r_ref) const {
     const double l1 = x[1], c = std::cos(tangency);
     const double l2 = a * (std::sin(tangency) + (x[0] - tangency) * c) / r_ref;
@@ -131,7 +132,10 @@ struct SphereCapSystem {
       return outside_domain(dx);
     const double dl2 = (l1 * c - l2) / r_ref;
     dx[0] = l1 / a;
-    const double tangential = mu == 0.0 ? c * st.s2 : (c + mu * std::sin(tangency)) * st.s2;
+    const double tangential =
+        mu == 0.0         ? c * st.s2
+        : pressure == 0.0 ? (c + mu * std::sin(tangency)) * st.s2
+                          : (c + mu * std::sin(tangency)) * st.s2 + mu * pressure * l2 * r_ref * l1;
     dx[1] = (tangential - st.s1 - r_ref * st.ds1_dl2 * dl2) / (r_ref * st.ds1_dl1);
     dx[2] = strain_energy_density(law, l1, l2, st.i1) * r_ref;
   }
@@ -229,12 +233,21 @@ class SphereTippedContact {
     // theta = kPoleStart there (closer with friction: that start is exact to O(R^2) only; the
     // neglected terms are O((mu theta)^2) ~ 1e-10 mu^2 relative at theta = 1e-5).  With a flat
     // face the arc starts at its edge, R = b / l, with the face's uniform state.
-    const double r_start =
+    double r_start =
         s_.face > 0.0 ? s_.face / l : (s_.mu == 0.0 ? kPoleStart : kPoleStartFriction) * s_.a / l;
     if (!(r_start < 1.0)) return std::nullopt;  // the face's edge must lie inside the clamp
     SphereCapState y = s_.face > 0.0
                            ? face_edge_state(l, r_start)
                            : sphere_cap_pole_state(law_, s_.a, l, r_start, s_.mu, pressure_);
+    // Under a gas pressure with friction the face is not uniform: marched from the pole.
+    std::vector<PartTwoSample> face_samples;
+    if (fillet_face().rough()) {
+      const auto e =
+          fillet_face().march(l, s_.face, samples ? &face_samples : nullptr, face_points());
+      if (!e) return std::nullopt;
+      r_start = e->r_ref;
+      y = {0.0, e->l1, e->energy};
+    }
     auto vertical = [&](double r, const SphereCapState& x) {
       return r * membrane_stress(law_, x[1], radius_at(x[0]) / r).s1 * std::sin(slope_at(x[0]));
     };
@@ -251,7 +264,9 @@ class SphereTippedContact {
       const int n = std::max(1, part_one_.settings().field_points);
       integration.max_step = arc() / n;
     }
-    if (samples) {
+    if (samples && fillet_face().rough()) {
+      *samples = std::move(face_samples);
+    } else if (samples) {
       samples->clear();
       samples->push_back({0.0, l, 0.0});
       for (int k = 1; k < (s_.face > 0.0 ? kFacePoints : 0); ++k)  // the face, uniform
@@ -317,9 +332,14 @@ class SphereTippedContact {
     // dV/dR = cos(theta) (s2 sin(theta) + R s1 lambda1 / rho + P r lambda1) + mu sin(theta)
     // p r lambda1.
     const auto edge = [&](double r, const SphereCapState& x) {
-      if (cone() && x[0] > tangency_) {  // on the cone: V = R s1 sin(slope)
+      if (cone() && x[0] > tangency_) {  // on the cone: V = R s1 sin(slope) (+ P r^2 / 2)
         const auto st = membrane_stress(law_, x[1], radius_at(x[0]) / r);
         const double c = std::cos(tangency_), sn = std::sin(tangency_);
+        if (pressure_ > 0.0) {  // dV/dR = sin(slope) d(R s1)/dR + P r lambda1 cos(slope)
+          const double gas = pressure_ * radius_at(x[0]) * x[1];
+          return Event{r * st.s1 * sn + gas_load(x[0]) - f,
+                       sn * ((c + s_.mu * sn) * st.s2 + s_.mu * gas) + c * gas};
+        }
         return Event{r * st.s1 * sn - f, sn * (c + s_.mu * sn) * st.s2};
       }
       const double l2 = radius_at(x[0]) / r;
@@ -436,6 +456,7 @@ class SphereTippedContact {
     if (c == Configuration::Stick)
       return stick_solved() ? stick_->edge_start(1.0 / p, f) : std::nullopt;
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
+    if (fillet_face().on_face(f)) return fillet_face().start(f, p);
     const auto& cap = cap_to_edge(p, f);
     if (!cap) return std::nullopt;
     const auto* end = &cap->end;
@@ -463,6 +484,8 @@ class SphereTippedContact {
       sol.part_three_stretch = part_one_.prestretch();  // the pole holds as it touched
       return true;
     }
+    if (fillet_face().on_face(sol.f))  // under a gas pressure, the fillet's face alone
+      return fillet_face().attach(st, p, record ? face_points() : 0, sol);
     // The free start's march (its steps and I1 the same), unless the cap is sampled: then it is
     // marched again in shorter steps.
     std::optional<CapEnd> end;
@@ -516,11 +539,15 @@ class SphereTippedContact {
       plan.message = s_.face > 0.0 ? kFilletStickNotImplemented : kStickNotImplemented;
       return plan;
     }
+    if (fillet_face().on_face(f))  // under a gas pressure, the fillet's face alone
+      return bracket_from_below(counted,
+                                Configuration::SlipWithoutPartTwo,
+                                "filleted flat-punch shooting on the face under pressure");
     // The pole stretch at which the cap carries f exactly at the equator, and the clamp residual
     // of Part I leaving the equator vertically there: negative while the contact stays on the
     // hemisphere, >= 0 once it wraps the cylinder side.
     const auto onset = equator_onset(f);
-    if (!onset && pressure_ > 0.0 && f <= gas_load(kHalfPiCap)) return hemisphere_plan(f, counted);
+    if (!onset && pressure_ > 0.0 && f <= end_gas_load()) return hemisphere_plan(f, counted);
     // A large probe (a above ~2 A / pi: 16.7 mm on A = 25 mm) puts its equator past the clamp
     // for the barely stretched membrane, and no cap reaching it inside the clamp carries just f
     // there: no onset, yet no locking either.  The contact ends on the hemisphere.
@@ -720,10 +747,12 @@ class SphereTippedContact {
   // punch's Part III.
   LargestFirstInvariant largest_first_invariant(const ScaledSolution& sol) const {
     if (pole_is_largest(sol))
-      return s_.face > 0.0 ? LargestFirstInvariant{MembranePart::Tip,
-                                                   s_.face / sol.part_three_stretch,
-                                                   s_.face}
-                           : LargestFirstInvariant{MembranePart::Tip, 0.0, 0.0};
+      // (On the face alone under a gas pressure the contact disc ends before the face.)
+      return s_.face > 0.0
+                 ? LargestFirstInvariant{MembranePart::Tip,
+                                         std::min(s_.face / sol.part_three_stretch, sol.r_corner),
+                                         std::min(s_.face, sol.r_corner * sol.part_three_stretch)}
+                 : LargestFirstInvariant{MembranePart::Tip, 0.0, 0.0};
     const bool with_side = sol.configuration == Configuration::SlipWithPartTwo;
     const bool on_cap = sol.max_i1_r < sol.r_corner * (1.0 - kEdgeTol);
     const bool on_side = with_side && !on_cap && sol.max_i1_r < sol.r_top * (1.0 - kEdgeTol);
@@ -771,23 +800,30 @@ class SphereTippedContact {
     for (const auto& sample : sol.part_two) {
       const double r_ref = sample[0], l1 = sample[1], psi = sample[2];
       const bool side = !cone() && psi > kHalfPiCap;
-      const bool face = s_.face > 0.0 && psi == 0.0 && r_ref < s_.face / l1;
-      const double radius = side ? s_.a : face ? l1 * r_ref : radius_at(psi);
-      const double l2 = r_ref > 0.0 && !face ? radius / r_ref : l1;
+      // (Under a gas pressure with friction the face is not uniform: psi = (r - b) / rho < 0.)
+      const bool rough_face = psi < 0.0;
+      const bool face = rough_face || (s_.face > 0.0 && psi == 0.0 && r_ref < s_.face / l1);
+      const double radius = side         ? s_.a
+                            : rough_face ? s_.face + arc() * psi
+                            : face       ? l1 * r_ref
+                                         : radius_at(psi);
+      const double l2 = r_ref > 0.0 && (!face || rough_face) ? radius / r_ref : l1;
       const auto st = membrane_stress(law_, l1, l2);
       // The flat face carries only the gas pressure; on the cone the meridian is straight: the
       // hoop tension alone presses it on.
       const double normal = face ? pressure_
                             : cone() && psi > tangency_
-                                ? st.s2 * std::sin(tangency_) / (l1 * radius)
+                                ? st.s2 * std::sin(tangency_) / (l1 * radius) + pressure_
                                 : contact_pressure(l1, l2, st, side, psi);
       const double pressure = normal * g * u.thickness_mm / big_a;
       append_point(m,
                    side ? MembranePart::Side : MembranePart::Tip,
                    r_ref * big_a,
                    radius * big_a,
-                   depth - profile_height(psi) * big_a,
-                   cone() ? slope_at(psi) : std::min(psi, kHalfPiCap),
+                   face ? depth : depth - profile_height(psi) * big_a,
+                   face     ? 0.0
+                   : cone() ? slope_at(psi)
+                            : std::min(psi, kHalfPiCap),
                    l1,
                    l2,
                    st,
@@ -812,10 +848,15 @@ class SphereTippedContact {
     return ((side ? 0.0 : st.s1 / l2) + st.s2 / l1) / s_.a + pressure_;
   }
 
-  // The gas pressure's resultant on the cap up to polar angle theta, P (a sin(theta))^2 / 2.
+  // The gas pressure's resultant on the cap up to polar angle theta, P (a sin(theta))^2 / 2 (on
+  // the cone, up to the profile point psi: P r(psi)^2 / 2).
   double gas_load(double theta) const {
-    const double r = arc_radius_at(theta);
+    const double r = radius_at(theta);
     return 0.5 * pressure_ * r * r;
+  }
+  // ... up to where the curved profile ends: the sphere's (fillet's) equator, the cone's kink.
+  double end_gas_load() const {
+    return cone() ? 0.5 * pressure_ * side_radius_ * side_radius_ : gas_load(kHalfPiCap);
   }
 
   // The arc's radius rho (a for the hemisphere) and the current radius of its point at polar
@@ -918,7 +959,7 @@ class SphereTippedContact {
         std::optional<double> g_lo;
         for (int k = 0; k < 60; ++k, step *= 2.0) {
           lo = std::max(1.0, hi - step);
-          g_lo = lo == 1.0 ? std::optional<double>(gas_load(kHalfPiCap) - f) : g(lo);
+          g_lo = lo == 1.0 ? std::optional<double>(end_gas_load() - f) : g(lo);
           if (g_lo && *g_lo < 0.0) break;
           if (g_lo) {
             hi = lo;
@@ -951,7 +992,7 @@ class SphereTippedContact {
     // Under a gas pressure the cap carries its share P a^2 / 2 at the equator even unstretched:
     // no onset when that alone exceeds f.
     const double cap = locking_radial_stretch(law_, 1.0);
-    const double g_flat = pressure_ == 0.0 ? -f : gas_load(kHalfPiCap) - f;
+    const double g_flat = pressure_ == 0.0 ? -f : end_gas_load() - f;
     if (!(g_flat < 0.0)) return std::nullopt;
     root = shoot_increasing(
         g, 1.0, g_flat, cap, part_one_.settings().max_iterations, std::isfinite(cap) ? 0.0 : 0.05);
@@ -997,6 +1038,12 @@ class SphereTippedContact {
   static constexpr double kEndResidualMargin = 1e-5;
 
   bool cone() const { return s_.beyond == BeyondTipSphere::Cone; }
+  // The filleted punch's face under a gas pressure (fillet_face_under_gas.hpp).
+  FilletFaceUnderGas<Law> fillet_face() const {
+    return {law_, locking_i1_, pressure_, s_.mu, s_.face, arc(), part_one_.settings().integration};
+  }
+  // Samples of the face under a gas pressure: as many as of the arc.
+  int face_points() const { return std::max(1, part_one_.settings().field_points); }
   // The stick stage is solved on the sphere-tipped probe without a gas pressure.
   bool stick_solved() const {
     return s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide && pressure_ == 0.0;
@@ -1019,7 +1066,9 @@ class SphereTippedContact {
   // of a vertical exit.
   double capacity(const CapEnd& end) const {
     if (!cone()) return end.carried;
-    return s_.mu == 0.0 ? end.pull : end.pull * std::exp(s_.mu * (kHalfPiCap - tangency_));
+    const double pull =
+        s_.mu == 0.0 ? end.pull : end.pull * std::exp(s_.mu * (kHalfPiCap - tangency_));
+    return pressure_ == 0.0 ? pull : pull + end_gas_load();  // the gas's share inside the kink
   }
 
   // Part I leaving the cone-shank kink (the cap carried less than f up to it): the membrane
@@ -1028,8 +1077,10 @@ class SphereTippedContact {
   // membrane slides outward over the kink, §5), at the slope where N exp(...) sin(slope) = f,
   // between the cone's and vertical; none when even a vertical exit carries less than f (the
   // membrane would wrap the shank).
-  std::optional<FreeStart> kink_start(const CapEnd& end, double f) const {
-    if (!(capacity(end) >= f * (1.0 - 1e-9))) return std::nullopt;
+  // Under a gas pressure the membrane's pull over the kink is f less the gas's share inside it.
+  std::optional<FreeStart> kink_start(const CapEnd& end, double force) const {
+    if (!(capacity(end) >= force * (1.0 - 1e-9))) return std::nullopt;
+    const double f = pressure_ == 0.0 ? force : force - end_gas_load();
     double slope = std::asin(std::min(1.0, f / end.pull)), ratio = 1.0;
     if (s_.mu != 0.0) {
       // sin(slope) exp(mu (slope - tangency)) = f / N grows with the slope on [tangency, pi/2].
@@ -1083,7 +1134,7 @@ class SphereTippedContact {
   // the probe's cross-section takes its share), t = 0.
   std::optional<FreeStart> side_top_start(double f, double p) const {
     if (!(p > side_radius_)) return std::nullopt;  // the top must lie inside the clamp
-    const double pull = pressure_ == 0.0 ? f : f - gas_load(kHalfPiCap);
+    const double pull = pressure_ == 0.0 ? f : f - end_gas_load();
     if (!(pull > 0.0)) return std::nullopt;
     const auto l1 = invert_radial_stress(law_, pull * p / side_radius_, p);
     if (!l1) return std::nullopt;
