@@ -208,7 +208,7 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "Radius rho of the flat punch's rounded corner (a toroidal fillet\n"
                      "between the flat face, of radius a - rho, and the cylinder) [mm]\n"
                      "(>= 0 and smaller than --indenter-radius; 0: the paper's sharp\n"
-                     "corner; > 0: sliding only, --stick none, no gas pressure)")
+                     "corner; > 0: sliding only, --stick none)")
           ->group(kGeometry)
           ->capture_default_str();
   app.add_option("--ball-radius",
@@ -247,8 +247,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "membrane is inflated by p first (its first inflated state, or the\n"
                      "one --inflated-state chooses), then\n"
                      "indented at its pole from the convex side; depths are measured from\n"
-                     "the inflated pole.  The flat punch takes it frictionless and\n"
-                     "sliding (--friction 0, --stick none) so far.  (After 'inflate',\n"
+                     "the inflated pole.  Every probe is solved sliding under it\n"
+                     "(--stick none; with or without --friction).  (After 'inflate',\n"
                      "--pressure is that command's own: the states at p.)")
           ->group(kGeometry)
           ->capture_default_str();
