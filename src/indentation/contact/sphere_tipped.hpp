@@ -772,8 +772,10 @@ class SphereTippedContact {
     const bool with_side = sol.configuration == Configuration::SlipWithPartTwo;
     if (std::abs(sol.max_i1_r - sol.r_top) <= kEdgeTol * sol.r_top)
       return with_side ? "the top of the contact on the cylinder side, where the membrane leaves it"
-             : fillet  ? "the contact edge, where the membrane leaves the fillet"
-                       : "the contact edge, where the membrane leaves the sphere";
+             : fillet && fillet_face().on_face(sol.f)
+                 ? "the contact edge, where the membrane leaves the flat face (under the gas)"
+             : fillet ? "the contact edge, where the membrane leaves the fillet"
+                      : "the contact edge, where the membrane leaves the sphere";
     if (sol.max_i1_r < sol.r_corner)
       return fillet ? "on the fillet, between the flat face and the contact edge"
                     : "on the sphere, between the pole and the contact edge";
