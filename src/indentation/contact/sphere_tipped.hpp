@@ -526,7 +526,7 @@ class SphereTippedContact {
     // there: no onset, yet no locking either.  The contact ends on the hemisphere.
     if (!onset && !march(1.0 + kBarelyStretched, std::numeric_limits<double>::infinity()))
       return edge_on_cap_plan(f, lowest_carrying_stretch(f), kBeyondDomain, counted);
-    if (!onset && !std::isfinite(locking_i1_)) return beyond_cap_capacity_plan(f, counted);
+    if (!onset && !std::isfinite(locking_i1_)) return beyond_cap_capacity_plan(counted);
     if (!onset) {
       plan.status = Status::BeyondLocking;
       plan.message = cone() ? "no pole stretch lets the cone probe's tip and cone carry this force "
@@ -584,7 +584,7 @@ class SphereTippedContact {
   // down the side cannot meet the cap's pull: the force is beyond the limit load.  The ball and
   // the cone would wrap what the model does not follow.
   template <class Residual>
-  ShootingPlan beyond_cap_capacity_plan(double f, Residual& counted) const {
+  ShootingPlan beyond_cap_capacity_plan(Residual& counted) const {
     if (s_.beyond == BeyondTipSphere::CylinderSide && rough_side_solved())
       return bracket_from_below(counted,
                                 Configuration::SlipWithPartTwo,
@@ -634,10 +634,12 @@ class SphereTippedContact {
     ShootingPlan plan;
     plan.configuration = Configuration::SlipWithoutPartTwo;
     if (!(top > 1.0)) {
-      plan.status = Status::BeyondLocking;
-      plan.message =
-          "no pole stretch lets the sphere-tipped probe carry this force before the "
-          "material locks";
+      plan.status = std::isfinite(locking_i1_) ? Status::BeyondLocking : Status::NoConvergence;
+      plan.message = std::isfinite(locking_i1_)
+                         ? "no pole stretch lets the sphere-tipped probe carry this force before "
+                           "the material locks"
+                         : "no pole stretch the cap can be marched at lets the sphere-tipped probe "
+                           "carry this force on its hemisphere";
       return plan;
     }
     double hi = top;
