@@ -51,8 +51,9 @@ double pull_at_equator(const Shooting& shooting, double l) {
 
 // The pull at the equator rises with the pole stretch and levels off; without friction its bound
 // is a / A (the normalised 2 pi G H a), the limit load of the wrapped neo-Hookean probe (§15).
-// The pull approaches it as ~l^-3 (3.3e-7 relative between l = 10 and 20): at l = 40 it is
-// within 1e-7 of it.  With mu' = 0.18 the bound is 0.1950864 N, 29 % above it.
+// The pull approaches it as ~l^-6, as s_eq / l = 1 - l^-6 does (2.2e-6 relative between l = 10 and
+// 20, 5e-8 at 20): at l = 40 it is within 1e-7 of it.  With mu' = 0.18 the bound is 0.1950864 N,
+// 29 % above it.
 TEST(CapPullBound, RisesToABoundThatWithoutFrictionIsTheLimitLoad) {
   int checked = 0;  // probes whose contact model marches a cap (all four)
   for (const double fillet : {-1.0, 0.5, 1.5}) {

@@ -588,8 +588,10 @@ class SphereTippedContact {
     if (s_.beyond == BeyondTipSphere::CylinderSide && rough_side_solved())
       return bracket_from_below(counted,
                                 Configuration::SlipWithPartTwo,
-                                "sphere-tipped shooting (side with friction, beyond the cap's pull "
-                                "at the equator)");
+                                s_.face > 0.0 ? "filleted flat-punch shooting (side with friction, "
+                                                "beyond the arc's pull at the equator)"
+                                              : "sphere-tipped shooting (side with friction, "
+                                                "beyond the cap's pull at the equator)");
     ShootingPlan plan;
     plan.configuration = Configuration::SlipWithPartTwo;
     if (s_.beyond != BeyondTipSphere::CylinderSide) {
@@ -926,7 +928,7 @@ class SphereTippedContact {
     // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
     // law without locking whose V at the equator stays below f at every stretch): short of f
     // there, by as little as f exceeds V's bound (1e-3 relative let a neo-Hookean force 2e-5
-    // beyond its limit load pass as an onset, at a pole stretch of ~1e3), while a true root,
+    // beyond its limit load pass as an onset, a state at 66 mm with I1 ~ 1e23), while a true root,
     // bracketed to a few ulps, meets it to the integration's accuracy (absolute, at the tiny
     // forces where V at the equator crosses zero: an unstretched pole leaves the cap in hoop
     // compression towards the equator).
