@@ -553,6 +553,7 @@ class SphereTippedContact {
     // there: no onset, yet no locking either.  The contact ends on the hemisphere.
     if (!onset && !march(1.0 + kBarelyStretched, std::numeric_limits<double>::infinity()))
       return edge_on_cap_plan(f, lowest_carrying_stretch(f), kBeyondDomain, counted);
+    if (!onset && !std::isfinite(locking_i1_)) return beyond_cap_capacity_plan(counted);
     if (!onset) {
       plan.status = Status::BeyondLocking;
       plan.message = cone() ? "no pole stretch lets the cone probe's tip and cone carry this force "
@@ -602,6 +603,38 @@ class SphereTippedContact {
     return edge_on_cap_plan(f, onset->stretch, g_onset, counted);
   }
 
+  // A law without locking: the cap's pull at the equator grows with the pole stretch towards a
+  // bound (the neo-Hookean sphere-tipped probe of 2 mm: 0.195086 N with mu' = 0.18, the limit load
+  // 2 pi G H a = 0.150796 N without friction), and a force beyond it is carried at no pole
+  // stretch's equator (docs/model.md §8.1).  With friction on the side the side carries the rest
+  // (its top rises until R s1 = f): shot on the pole stretch from below.  Without it R s1 = f
+  // down the side cannot meet the cap's pull: the force is beyond the limit load.  The ball and
+  // the cone would wrap what the model does not follow.
+  template <class Residual>
+  ShootingPlan beyond_cap_capacity_plan(Residual& counted) const {
+    if (s_.beyond == BeyondTipSphere::CylinderSide && rough_side_solved())
+      return bracket_from_below(counted,
+                                Configuration::SlipWithPartTwo,
+                                s_.face > 0.0 ? "filleted flat-punch shooting (side with friction, "
+                                                "beyond the arc's pull at the equator)"
+                                              : "sphere-tipped shooting (side with friction, "
+                                                "beyond the cap's pull at the equator)");
+    ShootingPlan plan;
+    plan.configuration = Configuration::SlipWithPartTwo;
+    if (s_.beyond != BeyondTipSphere::CylinderSide) {
+      plan.status = Status::OutsideModel;
+      plan.message = s_.beyond == BeyondTipSphere::Neck ? kNeckNotSolved : kShankNotSolved;
+      return plan;
+    }
+    plan.status = Status::LimitLoad;
+    plan.message = fmt::format(
+        "the force is beyond the limit load of the {}: without friction on its side the membrane "
+        "carries at most the cap's pull at the equator, which tends to a bound as the pole "
+        "stretch grows without limit (the material never locks)",
+        s_.face > 0.0 ? "filleted flat punch" : "sphere-tipped probe");
+    return plan;
+  }
+
   // A pole stretch a little above 1: its cap reaches the equator inside the clamp unless the
   // probe is large.
   static constexpr double kBarelyStretched = 1e-6;
@@ -630,10 +663,12 @@ class SphereTippedContact {
     ShootingPlan plan;
     plan.configuration = Configuration::SlipWithoutPartTwo;
     if (!(top > 1.0)) {
-      plan.status = Status::BeyondLocking;
-      plan.message =
-          "no pole stretch lets the sphere-tipped probe carry this force before the "
-          "material locks";
+      plan.status = std::isfinite(locking_i1_) ? Status::BeyondLocking : Status::NoConvergence;
+      plan.message = std::isfinite(locking_i1_)
+                         ? "no pole stretch lets the sphere-tipped probe carry this force before "
+                           "the material locks"
+                         : "no pole stretch the cap can be marched at lets the sphere-tipped probe "
+                           "carry this force on its hemisphere";
       return plan;
     }
     double hi = top;
@@ -934,14 +969,16 @@ class SphereTippedContact {
       return capacity(*end) - f;
     };
     // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
-    // law without locking whose V at the equator stays below f at every stretch): far from f
-    // there, while a true root meets it to the integration's accuracy (absolute, at the tiny
+    // law without locking whose V at the equator stays below f at every stretch): short of f
+    // there, by as little as f exceeds V's bound (1e-3 relative let a neo-Hookean force 2e-5
+    // beyond its limit load pass as an onset, a state at 66 mm with I1 ~ 1e23), while a true root,
+    // bracketed to a few ulps, meets it to the integration's accuracy (absolute, at the tiny
     // forces where V at the equator crosses zero: an unstretched pole leaves the cap in hoop
     // compression towards the equator).
     auto found = [&](double l) -> std::optional<EquatorOnset> {
       InteriorMaximum<SphereCapState> i1_max;
       const auto end = march(l, std::numeric_limits<double>::infinity(), nullptr, &i1_max);
-      if (!end || !(std::abs(capacity(*end) - f) <= 1e-3 * f + 1e-9)) return std::nullopt;
+      if (!end || !(std::abs(capacity(*end) - f) <= kOnsetMatch * f + 1e-9)) return std::nullopt;
       last_onset_ = ForceOnset{f, EquatorOnset{l, *end, i1_max}};
       return last_onset_->onset;
     };
@@ -1038,6 +1075,7 @@ class SphereTippedContact {
   static constexpr double kEdgeTol = 1e-9;
   static constexpr int kFacePoints = 4;  // samples of the uniform flat face, pole included
   static constexpr double kEndResidualMargin = 1e-5;
+  static constexpr double kOnsetMatch = 1e-8;  // an equator onset's pull against f (relative)
 
   bool cone() const { return s_.beyond == BeyondTipSphere::Cone; }
   // The filleted punch's face under a gas pressure (fillet_face_under_gas.hpp).
