@@ -997,10 +997,9 @@ class SphereTippedContact {
   static constexpr double kEndResidualMargin = 1e-5;
 
   bool cone() const { return s_.beyond == BeyondTipSphere::Cone; }
-  // The stick stage is solved on the sphere-tipped probe without a gas pressure.
-  bool stick_solved() const {
-    return s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide && pressure_ == 0.0;
-  }
+  // The stick stage is solved on the sphere-tipped probe (under a held gas pressure too, from
+  // the inflated pole: docs/model.md §17.3).
+  bool stick_solved() const { return s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide; }
 
   // The cap's system, with the cone past the tangency for the cone probe (by position, or the
   // sphere's or the cone's equations throughout).
