@@ -442,12 +442,14 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
                                   "sliding only so far: stick rule must be 'none', got '{}'",
                                   to_string(s.rule))});
   detail::append_probe_shape_errors(errors, p);
-  // On the flat punch Coulomb friction cannot hold the membrane at all (docs/model.md §9).
+  // On the flat punch Coulomb friction cannot hold the membrane at all (docs/model.md §9), unless
+  // a gas pressure presses it on the face (§17.3).
   if (s.rule == StickRule::Coulomb && std::holds_alternative<FlatPunch>(p.indenter) &&
-      std::get<FlatPunch>(p.indenter).fillet_radius_mm == 0.0)
+      std::get<FlatPunch>(p.indenter).fillet_radius_mm == 0.0 && !(p.preload.pressure_mpa > 0.0))
     errors.push_back({"stick.rule",
-                      "stick rule 'coulomb' needs a curved probe (sphere-tipped): on the flat "
-                      "punch Coulomb friction cannot hold the membrane under the tip, use 'none'"});
+                      "stick rule 'coulomb' needs a curved probe (sphere-tipped) or a gas "
+                      "pressure (--pressure): on the flat punch Coulomb friction cannot hold the "
+                      "membrane under the tip, use 'none'"});
   if (s.rule == StickRule::Force || s.rule == StickRule::Depth ||
       s.rule == StickRule::EdgeTension) {
     if (!std::isfinite(s.threshold) || s.threshold <= 0.0)

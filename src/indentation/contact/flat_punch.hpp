@@ -713,6 +713,15 @@ class FlatPunchContact {
     sol.r_corner = r_edge;
     sol.part_three_stretch = held_face_->pole_stretch();
     sol.held_traction_ratio = held_face_->held_ratio(c_edge);
+    // Past the face the held corner, wrapped by the exit slope phi, holds the jump of the line
+    // tension between the face's edge and Part I (the same hoop stretch on both sides): the
+    // capstan law needs mu >= |ln(s1_I / s1_face)| / phi (docs/model.md §17.3).
+    if (sol.f >= face_load_ && st.slope > 0.0) {
+      const double s1_face = membrane_stress(law_, l1_edge, l2_edge).s1;
+      const double s1_free = membrane_stress(law_, st.state[1], l2_edge).s1;
+      sol.held_traction_ratio =
+          std::max(sol.held_traction_ratio, std::abs(std::log(s1_free / s1_face)) / st.slope);
+    }
     return true;
   }
 
