@@ -269,7 +269,10 @@ class SphereStickHistory {
   // stick tests.
   std::optional<double> rk4_step(double r, double theta, double dr) const {
     auto slope = [&](double at, double th) -> std::optional<double> {
-      if (!(th < 0.5 * kPi)) return std::nullopt;
+      if (!(th < 0.5 * kPi)) {
+        past_equator_ = true;  // a stage already passes it: the edge reaches it in this step
+        return std::nullopt;
+      }
       const auto e = solve_edge(at, th, guess_);
       if (!e) return std::nullopt;
       guess_ = e->l1;
@@ -287,9 +290,11 @@ class SphereStickHistory {
   static constexpr double kFirstTouchRadius = 1e-3;
   static constexpr double kStableStepFraction = 0.25;
 
-  // The history stopped before the equator: the material locked on the way.
+  // The history stopped before the equator: the material locked on the way, unless a stage of
+  // the last step already passed the equator.
   void end_at(double theta) const {
-    end_ = theta < 0.5 * kPi ? StickHistoryEnd::Locking : StickHistoryEnd::Equator;
+    end_ =
+        theta < 0.5 * kPi && !past_equator_ ? StickHistoryEnd::Locking : StickHistoryEnd::Equator;
   }
 
   const FreePart<Law>& part_one_;
@@ -297,6 +302,7 @@ class SphereStickHistory {
   int steps_;
   mutable bool built_ = false;
   mutable StickHistoryEnd end_ = StickHistoryEnd::Equator;
+  mutable bool past_equator_ = false;
   mutable std::vector<StuckPoint> points_;
   mutable std::vector<double> ratio_max_;
   mutable double guess_ = 1.0;  // the last edge stretch solved: the next solve's start  // running
