@@ -166,7 +166,10 @@ TEST(PressurisedStick, HeldWorkIsTheChangeOfThePotential) {
 
 // Held, the material under the probe cannot give the free membrane more length: at the same depth
 // the held force exceeds the sliding (frictionless) one, on the face, past it and on the sphere.
+// The pole, the first material touched, keeps the dome's pole stretch (reported as the Part III
+// stretch of both probes).
 TEST(PressurisedStick, HeldIsStifferThanSliding) {
+  const double pole = inflated_pole_stretch_of(flat());
   for (const Problem& base : {flat(), pressurised()}) {
     for (const double depth : {0.1, 1.0, 5.0, 20.0}) {
       SCOPED_TRACE(fmt::format("{}, depth {} mm", describe(base.indenter), depth));
@@ -174,6 +177,7 @@ TEST(PressurisedStick, HeldIsStifferThanSliding) {
       const auto sliding = solve_at_depth(base, depth, Stage::Slip);
       ASSERT_TRUE(stuck.ok() && sliding.ok()) << stuck.message << sliding.message;
       EXPECT_GT(stuck.force_n, sliding.force_n);
+      EXPECT_NEAR(stuck.part_three_stretch, pole, 1e-12);
     }
   }
 }

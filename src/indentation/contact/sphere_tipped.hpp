@@ -460,7 +460,7 @@ class SphereTippedContact {
                                  : attach_with_side(st, record, sol, maxima);
     if (c == Configuration::Stick) {
       attach_stuck_cap(*stick_, law_, s_.a, st, record, sol);
-      sol.part_three_stretch = part_one_.prestretch();  // the pole holds as it touched
+      sol.part_three_stretch = stick_->first_touch_stretch();  // the pole holds as it touched
       return true;
     }
     // The free start's march (its steps and I1 the same), unless the cap is sampled: then it is
