@@ -183,8 +183,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "Probe shape: flat (the paper's flat-ended cylinder, its corner\n"
                      "sharp or rounded by --fillet-radius),\n"
                      "sphere-tipped (a cylinder ending in a hemisphere of the same radius;\n"
-                     "held (--stick, no gas pressure) or sliding, with Coulomb slip on the\n"
-                     "hemisphere and the cylinder side), ball (a sphere of radius\n"
+                     "held (--stick; not over --gas-volume) or sliding, with Coulomb slip on\n"
+                     "the hemisphere and the cylinder side), ball (a sphere of radius\n"
                      "--ball-radius on a rod of radius --indenter-radius; solved up to the\n"
                      "ball's equator) or\n"
                      "cone (half-angle --cone-half-angle, spherical tip of radius\n"
@@ -247,8 +247,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "membrane is inflated by p first (its first inflated state, or the\n"
                      "one --inflated-state chooses), then\n"
                      "indented at its pole from the convex side; depths are measured from\n"
-                     "the inflated pole.  Every probe is solved sliding under it\n"
-                     "(--stick none; with or without --friction).  (After 'inflate',\n"
+                     "the inflated pole; a held membrane (--stick) is held from the\n"
+                     "inflated pole on.  (After 'inflate',\n"
                      "--pressure is that command's own: the states at p.)")
           ->group(kGeometry)
           ->capture_default_str();

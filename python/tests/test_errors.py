@@ -35,11 +35,11 @@ INVALID = [
     ({"friction": 11}, ["--friction", "11"], ["friction"]),
     ({"critical_i1": 128}, ["--critical-i1", "128"], ["critical_i1"]),
     ({"stick": "force:-1"}, ["--stick", "force:-1"], ["stick.threshold"]),
-    # the sphere-tipped probe is held without a gas pressure only, for now
+    # the sphere-tipped probe is held without gas or at a held pressure, not over a sealed chamber
     ({"indenter": pu.SphereTipped(), "friction": 0, "stick": "always",
-      "preload": pu.Preload(pressure_mpa=0.005)},
+      "preload": pu.Preload(pressure_mpa=0.005, gas_volume_mm3=2e6)},
      ["--indenter", "sphere-tipped", "--friction", "0", "--stick", "always", "--pressure",
-      "0.005"], ["stick.rule"]),
+      "0.005", "--gas-volume", "2e6"], ["stick.rule"]),
     # Coulomb friction cannot hold the membrane on the flat punch
     ({"stick": "coulomb"}, ["--stick", "coulomb"], ["stick.rule"]),
     ({"indenter": pu.Ball(2.0, 2.0), "friction": 0},

@@ -405,15 +405,6 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
          fmt::format("pressure must be a finite number >= 0 MPa (the gas under the membrane "
                      "pushes it towards the indenter), got {}",
                      pressure)});
-  else if (pressure > 0.0 && std::holds_alternative<FlatPunch>(p.indenter) &&
-           p.stick.rule != StickRule::None) {
-    // A held edge would need the stick stage under pressure (docs/model.md §17): material that
-    // touches the face is held with the stretch it had then, a history the sliding solver lacks.
-    errors.push_back({"stick.rule",
-                      fmt::format("under a gas pressure the flat punch is solved sliding only "
-                                  "so far: stick rule must be 'none', got '{}'",
-                                  to_string(p.stick.rule))});
-  }
   if (const auto v0 = p.preload.gas_volume_mm3) {
     if (!std::isfinite(*v0) || *v0 <= 0.0)
       errors.push_back({"preload.gas_volume_mm3",
@@ -427,9 +418,9 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
                                     "sealed gas's absolute pressure is the gauge pressure plus "
                                     "it), got {}",
                                     p_atm)});
-    // Sealed flat (no pressure yet): the gas pressurises the face as soon as it is pressed.
-    if (!(p.preload.pressure_mpa > 0.0) && std::holds_alternative<FlatPunch>(p.indenter) &&
-        p.stick.rule != StickRule::None)
+    // The held face under a held pressure (docs/model.md §17.3) is built along a loading at one
+    // pressure; over a sealed chamber the pressure changes along it: not solved.
+    if (std::holds_alternative<FlatPunch>(p.indenter) && p.stick.rule != StickRule::None)
       errors.push_back({"stick.rule",
                         fmt::format("over a sealed gas chamber the flat punch is solved sliding "
                                     "only so far: stick rule must be 'none', got '{}'",
@@ -437,21 +428,24 @@ std::vector<ValidationError> validation_errors(const Problem& p) {
   }
   detail::append_inflated_state_errors(errors, p);
   const auto& s = p.stick;
-  // The sphere-tipped probe's stick stage (docs/model.md §15.4) holds material where it touched
-  // the flat membrane: under a gas pressure it would touch the inflated dome, not solved.
+  // The sphere-tipped probe's stick stage (docs/model.md §15.4, §17.3) holds material where it
+  // touched the membrane, flat or inflated at a held pressure; over a sealed chamber the pressure
+  // changes along the history: not solved.
   if (std::holds_alternative<SphereTipped>(p.indenter) && s.rule != StickRule::None &&
-      (p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3))
+      p.preload.gas_volume_mm3)
     errors.push_back({"stick.rule",
-                      fmt::format("under a gas pressure the sphere-tipped probe is solved sliding "
-                                  "only so far: stick rule must be 'none', got '{}'",
+                      fmt::format("over a sealed gas chamber the sphere-tipped probe is solved "
+                                  "sliding only so far: stick rule must be 'none', got '{}'",
                                   to_string(s.rule))});
   detail::append_probe_shape_errors(errors, p);
-  // On the flat punch Coulomb friction cannot hold the membrane at all (docs/model.md §9).
+  // On the flat punch Coulomb friction cannot hold the membrane at all (docs/model.md §9), unless
+  // a gas pressure presses it on the face (§17.3).
   if (s.rule == StickRule::Coulomb && std::holds_alternative<FlatPunch>(p.indenter) &&
-      std::get<FlatPunch>(p.indenter).fillet_radius_mm == 0.0)
+      std::get<FlatPunch>(p.indenter).fillet_radius_mm == 0.0 && !(p.preload.pressure_mpa > 0.0))
     errors.push_back({"stick.rule",
-                      "stick rule 'coulomb' needs a curved probe (sphere-tipped): on the flat "
-                      "punch Coulomb friction cannot hold the membrane under the tip, use 'none'"});
+                      "stick rule 'coulomb' needs a curved probe (sphere-tipped) or a gas "
+                      "pressure (--pressure): on the flat punch Coulomb friction cannot hold the "
+                      "membrane under the tip, use 'none'"});
   if (s.rule == StickRule::Force || s.rule == StickRule::Depth ||
       s.rule == StickRule::EdgeTension) {
     if (!std::isfinite(s.threshold) || s.threshold <= 0.0)

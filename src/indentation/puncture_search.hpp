@@ -103,7 +103,10 @@ SwitchPoint locate_switch(const Problem& p, const Shooting& shooting) {
         p.stick.threshold / (p.material.shear_modulus_mpa * p.geometry.thickness_mm);
     // The held membrane under the tip carries the pre-tension s_eq(L0) itself (docs/model.md §16):
     // the adhesion holds what the edge carries beyond it (nothing added without pre-stretch).
-    const double l0 = p.preload.prestretch;
+    // Under a gas pressure the first material touched is the inflated pole's, at its stretch
+    // (§17.3).
+    const double dome = shooting.settings().dome_pole_stretch;
+    const double l0 = dome > 0.0 ? dome : p.preload.prestretch;
     const double pretension =
         l0 == 1.0 ? 0.0 : membrane_stress(shooting.contact().law(), l0, l0).s1;
     const auto f =

@@ -30,6 +30,9 @@ struct ShootingSettings {
   // measured from it.
   double pressure = 0.0;
   double dome_height = 0.0;
+  // The inflated pole's equibiaxial stretch, the stretch of the first material an indenter
+  // touches under a gas pressure (0: no dome).
+  double dome_pole_stretch = 0.0;
 };
 
 // Part I sample: R, t, lambda1, lambda2, h.  Part II sample: R, lambda1, y.

@@ -280,25 +280,29 @@ TEST(SphereTipped, PunctureAtThePole) {
       in_free);
 }
 
-// What is not implemented is refused, never answered otherwise: a stick rule under a gas
-// pressure is a validation error naming the parameter (the held stage is solved without,
-// tests/solver/sphere_stick_test.cpp), and a held contact past the equator is a status; the
+// What is not implemented is refused, never answered otherwise: a stick rule over a sealed gas
+// chamber is a validation error naming the parameter (the held stage is solved without gas,
+// tests/solver/sphere_stick_test.cpp, and at a held pressure, pressurised_stick_test.cpp), and a
+// held contact past the equator is a status; the
 // finite elements hold the membrane at the flat punch's edge only (held on this probe: they
 // throw; they are checked frictionless in tests/verification/finite_element_sphere_test.cpp).
 // Friction on the cylinder side is solved (sphere_side_friction_test.cpp).
-TEST(SphereTipped, StickUnderPressureIsRefused) {
+TEST(SphereTipped, StickOverASealedChamberIsRefused) {
   Problem held = sphere_problem();
   held.stick = {StickRule::Always, 0.0};
   EXPECT_TRUE(validation_errors(held).empty());
   held.preload.pressure_mpa = 0.005;
+  EXPECT_TRUE(validation_errors(held).empty());
+  held.preload.gas_volume_mm3 = 2e6;
   const auto held_errors = validation_errors(held);
   ASSERT_EQ(held_errors.size(), 1u);
   EXPECT_EQ(held_errors.front().parameter, "stick.rule");
   EXPECT_THROW(solve_at_force(held, 0.1, Stage::Stick), InvalidInput);
   const auto shooting = make_shooting(sphere_problem(), SolverOptions{});
-  // Held, this membrane locks before its edge reaches the equator (at 6.2 N, 127 mm).
+  // Held, this membrane's edge reaches the equator at 6.2 N, 127 mm (I1 97 there, short of
+  // locking): beyond, it would wrap the cylinder.
   const auto locked = shooting.solve(Stage::Stick, 10.0);
-  EXPECT_EQ(locked.status, Status::BeyondLocking) << locked.message;
+  EXPECT_EQ(locked.status, Status::StickWrapsSide) << locked.message;
 
   EXPECT_THROW(fe_solve_at_depth(sphere_problem(), 5.0, FeContact::Held), InvalidInput);
 }

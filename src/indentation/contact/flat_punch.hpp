@@ -21,6 +21,7 @@
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -28,6 +29,7 @@
 
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/contact/flat_punch_face.hpp"
+#include "indentation/contact/flat_punch_held_face.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
 #include "indentation/free_part.hpp"
 #include "indentation/membrane_fields.hpp"
@@ -76,7 +78,14 @@ class FlatPunchContact {
         locking_i1_(part_one.locking_i1()),
         pressure_(part_one.pressure()),
         face_load_(0.5 * pressure_ * s_.a * s_.a),
-        rough_face_(pressure_ > 0.0 && s_.mu > 0.0) {}
+        rough_face_(pressure_ > 0.0 && s_.mu > 0.0),
+        held_face_(pressure_ > 0.0 ? std::make_shared<HeldFaceHistory<Law>>(
+                                         part_one, s_.a, part_one.settings().dome_pole_stretch)
+                                   : nullptr) {}
+
+  // Under a gas pressure, the map of the material held on the face (built on first use; shared
+  // by copies of the contact); null without pressure.
+  const HeldFaceHistory<Law>* held_face() const { return held_face_.get(); }
 
   // Every configuration's parameter exceeds this floor: 1 for the stretches at the edge and of
   // Part III, a / A for the hoop stretch a / R at the top of Part II (R < A).
@@ -94,13 +103,18 @@ class FlatPunchContact {
   // the vertical exit t = 0, where the clamp residual is linear in t but goes as the square root
   // of the stretch's distance from the vertical exit's; shooting on the stretch, that distance
   // falls below an ulp (and the clamp residual stalls ~1e-8) while t still resolves it.
+  // Under a gas pressure the held edge is the held face's (held_edge): on the face Part I leaves
+  // it horizontally (R s1 = t), past it the corner's pull is f - P a^2 / 2; t is continuous.
   std::optional<FreeStart> held_start(double f, double t) const {
     if (!(t >= 0.0) || !std::isfinite(t)) return std::nullopt;
-    const double l0 = part_one_.prestretch(), r0 = held_radius();
-    const auto l1 = invert_radial_stress(law_, std::hypot(f, t) / r0, l0);
+    const auto edge = held_edge(f);
+    if (!edge) return std::nullopt;
+    const auto [r0, l0] = *edge;
+    const double v = pressure_ > 0.0 ? std::max(pull(f), 0.0) : f;  // the edge's vertical pull
+    const auto l1 = invert_radial_stress(law_, std::hypot(v, t) / r0, l0);
     if (!l1 || !(first_invariant(*l1, l0) < locking_i1_)) return std::nullopt;
     return FreeStart{
-        {t, *l1, l0, 0.0}, r0, std::atan2(f, t), std::numeric_limits<double>::infinity()};
+        {t, *l1, l0, 0.0}, r0, std::atan2(v, t), std::numeric_limits<double>::infinity()};
   }
 
   std::optional<FreeStart> free_start(Configuration c, double f, double p) const {
@@ -149,6 +163,7 @@ class FlatPunchContact {
   bool attach(Configuration c, const FreeStart& st, double p, bool record, ScaledSolution& sol,
               bool maxima = true) const {
     if (c == Configuration::Stick) {
+      if (held_face_) return attach_held_face(st, record, sol);
       sol.r_corner = held_radius();
       sol.part_three_stretch = part_one_.prestretch();
       return true;
@@ -533,14 +548,14 @@ class FlatPunchContact {
   // reported at the corner's Part I/II side); Part II spans the side from the corner to its top.
   LargestFirstInvariant largest_first_invariant(const ScaledSolution& sol) const {
     // A non-uniform Part III (friction under pressure) keeps its largest I1 in sol.max_i1.
-    const bool in_part_three =
-        sol.max_i1 < max_first_invariant_of(sol) || (rough_face_ && sol.max_i1_r < sol.r_corner);
+    const bool in_part_three = sol.max_i1 < max_first_invariant_of(sol) ||
+                               (nonuniform_face(sol) && sol.max_i1_r < sol.r_corner);
     const MembranePart part =
         in_part_three ? MembranePart::Tip
         : sol.configuration == Configuration::SlipWithPartTwo && sol.max_i1_r < sol.r_top
             ? MembranePart::Side
             : MembranePart::Free;
-    if (rough_face_) return {part, sol.max_i1_r, sol.max_i1_radius};
+    if (nonuniform_face(sol)) return {part, sol.max_i1_r, sol.max_i1_radius};
     return {part,
             in_part_three ? sol.r_corner : sol.max_i1_r,
             in_part_three ? sol.r_corner * sol.part_three_stretch : sol.max_i1_radius};
@@ -559,6 +574,9 @@ class FlatPunchContact {
     // The gas's contact pressure on the face (and added to Eq. 16 on the side), in MPa.
     const double gas_mpa = pressure_ * g * u.thickness_mm / big_a;
     // Non-uniform (friction under pressure): its samples from the pole to the edge.
+    // Held (stick under pressure): the traction its map needs, towards the axis.
+    const bool held = held_face_ && sol.configuration == Configuration::Stick;
+    const double traction_mpa = g * u.thickness_mm / big_a;
     for (const auto& [r_ref, l1, l2] : sol.part_three)
       append_point(m,
                    MembranePart::Tip,
@@ -571,7 +589,7 @@ class FlatPunchContact {
                    membrane_stress(law_, l1, l2),
                    g,
                    gas_mpa,
-                   s_.mu * gas_mpa);
+                   held ? held_face_->tangential_near(l2 * r_ref) * traction_mpa : s_.mu * gas_mpa);
     constexpr int kPartThreePoints = 5;
     for (int i = 0; i < (sol.part_three.empty() ? kPartThreePoints : 0); ++i) {
       const double r_ref = sol.r_corner * i / (kPartThreePoints - 1);
@@ -611,6 +629,9 @@ class FlatPunchContact {
   }
 
   std::string crack_location(const ScaledSolution& sol) const {
+    if (held_face_ && sol.configuration == Configuration::Stick &&
+        sol.max_i1_r < sol.r_corner * (1.0 - 1e-12))
+      return "Part III, held on the indenter's face (where it touched the inflated dome)";
     if (rough_face_ && sol.max_i1_r < sol.r_corner * (1.0 - 1e-12))
       return "Part III, on the indenter's face (not uniform: friction under pressure)";
     const double l3 = sol.part_three_stretch;
@@ -637,6 +658,72 @@ class FlatPunchContact {
  private:
   // Reference radius of the material at the indenter's edge before it slides: a / L0.
   double held_radius() const { return s_.a / part_one_.prestretch(); }
+
+  // Where a held membrane leaves the face at force f: {R, lambda2} of the edge.  Without pressure
+  // the material under the face, a / L0 at L0; under a gas pressure the held face's map at the
+  // contact disc's edge c = sqrt(2 f / P), past the face (f >= P a^2 / 2) the map's end at the
+  // corner.  Empty beyond the map (the material locked before the disc reached the corner).
+  std::optional<std::pair<double, double>> held_edge(double f) const {
+    if (!held_face_) return std::pair{held_radius(), part_one_.prestretch()};
+    const auto& p = held_face_->points();
+    if (f < face_load_) {
+      const double c = std::sqrt(2.0 * f / pressure_);
+      const auto r = held_face_->radius_at(c);
+      if (!r || !(*r > 0.0)) return std::nullopt;
+      return std::pair{*r, c / *r};
+    }
+    if (!held_face_->complete()) return std::nullopt;
+    return std::pair{p.back().r, s_.a / p.back().r};
+  }
+
+  // A Part III that is not one stretch: the rough face's (friction under pressure) and the held
+  // face's (stick under pressure); its largest I1 is in sol.max_i1.
+  bool nonuniform_face(const ScaledSolution& sol) const {
+    return rough_face_ || (held_face_ && sol.configuration == Configuration::Stick);
+  }
+
+  // The held face under pressure once Part I is integrated from its edge `st`: its samples (the
+  // map's grid points inside the edge, then the edge), its largest I1 and the Coulomb ratio its
+  // points need.  The reported Part III stretch is the pole's (held at the dome's).
+  bool attach_held_face(const FreeStart& st, bool record, ScaledSolution& sol) const {
+    const double r_edge = st.r0, l2_edge = st.state[2];
+    if (record) sol.part_three.clear();
+    auto track = [&](double l1, double l2, double r_ref) {
+      const double i1 = first_invariant(l1, l2);
+      if (i1 > sol.max_i1) {
+        sol.max_i1 = i1;
+        sol.max_i1_r = r_ref;
+        sol.max_i1_radius = l2 * r_ref;
+      }
+      if (sol.wrinkle_r < 0.0 && r_ref > 0.0 && hoop_compressive(l1, l2)) {
+        sol.wrinkle_r = r_ref;
+        sol.wrinkle_radius = l2 * r_ref;
+      }
+      if (record) sol.part_three.push_back({r_ref, l1, l2});
+    };
+    for (const HeldFacePoint& q : held_face_->points()) {
+      if (!(q.r < r_edge * (1.0 - 1e-12))) break;
+      track(q.l1, q.r > 0.0 ? q.c / q.r : q.l1, q.r);
+    }
+    // The edge's material: held with the stretch the map gives it (on the face, as it joins,
+    // Part I's; at the corner the face's, Part I's may differ across the held corner).
+    const double c_edge = l2_edge * r_edge;
+    const double l1_edge = sol.f < face_load_ ? st.state[1] : held_face_->points().back().l1;
+    track(l1_edge, l2_edge, r_edge);
+    sol.r_corner = r_edge;
+    sol.part_three_stretch = held_face_->pole_stretch();
+    sol.held_traction_ratio = held_face_->held_ratio(c_edge);
+    // Past the face the held corner, wrapped by the exit slope phi, holds the jump of the line
+    // tension between the face's edge and Part I (the same hoop stretch on both sides): the
+    // capstan law needs mu >= |ln(s1_I / s1_face)| / phi (docs/model.md §17.3).
+    if (sol.f >= face_load_ && st.slope > 0.0) {
+      const double s1_face = membrane_stress(law_, l1_edge, l2_edge).s1;
+      const double s1_free = membrane_stress(law_, st.state[1], l2_edge).s1;
+      sol.held_traction_ratio =
+          std::max(sol.held_traction_ratio, std::abs(std::log(s1_free / s1_face)) / st.slope);
+    }
+    return true;
+  }
 
   // The force the membrane itself carries past the face: f less the gas pressure's resultant on
   // the face, P a^2 / 2 (f itself without pressure).
@@ -891,8 +978,15 @@ class FlatPunchContact {
   // Held at the edge: shoot on t (held_start), from the vertical exit t = 0 upward.
   template <class Residual>
   ShootingPlan stick_plan(double f, Residual& counted) const {
+    if (held_face_ && f < face_load_) return held_face_plan(f, counted);
     ShootingPlan plan;
     plan.configuration = Configuration::Stick;
+    if (held_face_ && !held_face_->complete()) {
+      plan.status = Status::BeyondLocking;
+      plan.message =
+          "the membrane held on the face locks before the contact reaches the indenter's edge";
+      return plan;
+    }
     if (!held_start(f, 0.0)) {
       plan.status = Status::BeyondLocking;
       plan.message = "the force exceeds what the membrane at the indenter's edge can carry";
@@ -911,6 +1005,42 @@ class FlatPunchContact {
     // has no cap; steps doubling from f (a 45 degree exit) bracket it.
     plan.initial_step = f;
     plan.no_root_message = "stick shooting found no edge tension meeting the clamp condition";
+    return plan;
+  }
+
+  // Held on the face under pressure (f < P a^2 / 2): t = R s1 of the edge, bracketed around the
+  // held map's t at the disc's edge (the map's grid states meet the clamp there), widened by
+  // doubling until the residual changes sign.
+  template <class Residual>
+  ShootingPlan held_face_plan(double f, Residual& counted) const {
+    ShootingPlan plan;
+    plan.configuration = Configuration::Stick;
+    const auto guess = held_face_->tension_near(std::sqrt(2.0 * f / pressure_));
+    if (!guess) {
+      plan.status = Status::BeyondLocking;
+      plan.message =
+          "the membrane held on the face locks before the contact disc carries this "
+          "force";
+      return plan;
+    }
+    for (double d = 1e-3; d < 1.0; d *= 2.0) {
+      const double lo = *guess * (1.0 - d), hi = *guess * (1.0 + d);
+      const auto g_lo = counted(Configuration::Stick, lo);
+      if (!g_lo || !(*g_lo < 0.0)) continue;
+      const auto g_hi = counted(Configuration::Stick, hi);
+      if (!g_hi || !(*g_hi >= 0.0)) continue;
+      plan.lo = lo;
+      plan.g_lo = *g_lo;
+      plan.cap = hi;
+      plan.g_cap = *g_hi;
+      plan.no_root_message =
+          "stick shooting on the held face found no edge tension meeting the clamp condition";
+      return plan;
+    }
+    plan.status = Status::NoConvergence;
+    plan.message =
+        "stick shooting on the held face: no bracket of the edge tension around the "
+        "held map's";
     return plan;
   }
 
@@ -1026,6 +1156,8 @@ class FlatPunchContact {
   // Friction under a gas pressure: Part III is not uniform (flat_punch_face.hpp), and both
   // sliding configurations are shot on its pole stretch.
   bool rough_face_;
+  // Stick under a gas pressure: the material held on the face where it touched the dome.
+  std::shared_ptr<HeldFaceHistory<Law>> held_face_;
 };
 
 }  // namespace puncture::detail

@@ -67,6 +67,17 @@ class SphereStickHistory {
     return end_;
   }
   double step() const { return 0.5 * kPi * a_ / part_one_.prestretch() / steps_; }
+  // The stretch of the first material touched: the inflated pole's under a gas pressure (docs/
+  // model.md §17.3), else the pre-stretch L0.
+  double first_touch_stretch() const {
+    const double pole = part_one_.settings().dome_pole_stretch;
+    return pole > 0.0 ? pole : part_one_.prestretch();
+  }
+  // The gas pressure's resultant on the cap up to theta, P (a sin(theta))^2 / 2 (0 without).
+  double gas_load(double theta) const {
+    const double rho = a_ * std::sin(theta);
+    return 0.5 * part_one_.pressure() * rho * rho;
+  }
 
   // theta at reference radius r <= the last grid point's: the cubic Hermite interpolant of
   // (theta_k, lambda1_k / a), exact to O(h^4) as the Runge-Kutta history itself.
@@ -94,14 +105,17 @@ class SphereStickHistory {
   }
 
   // Part I leaving the sphere at the edge R_c at force f (t = R s1 cos(theta), R s1 sin(theta)
-  // = f); empty beyond the history or outside the material's domain.
+  // = f less the gas's resultant on the cap); empty beyond the history or outside the material's
+  // domain.
   std::optional<FreeStart> edge_start(double r, double f) const {
     const auto theta = theta_at(r);
     if (!theta || !(*theta > 0.0) || !(f > 0.0)) return std::nullopt;
+    const double pull = f - gas_load(*theta);
+    if (!(pull > 0.0)) return std::nullopt;
     const double l2 = a_ * std::sin(*theta) / r;
-    const auto l1 = invert_radial_stress(part_one_.law(), f / (r * std::sin(*theta)), l2);
+    const auto l1 = invert_radial_stress(part_one_.law(), pull / (r * std::sin(*theta)), l2);
     if (!l1) return std::nullopt;
-    return FreeStart{{f / std::tan(*theta), *l1, l2, 0.0}, r, *theta, 1.0};
+    return FreeStart{{pull / std::tan(*theta), *l1, l2, 0.0}, r, *theta, 1.0};
   }
 
   // The tractions at grid point k: lambda1' from the grid (central differences of fourth
@@ -156,15 +170,16 @@ class SphereStickHistory {
   // lambda2' = (lambda1 cos(theta) - lambda2) / R.  At the pole (R = 0) the limits: tau = 0.
   StuckTraction traction_at(double r, double theta, double l1, double dl1) const {
     const auto& law = part_one_.law();
+    const double gas = part_one_.pressure();  // presses the membrane onto the sphere
     if (r == 0.0) {
       const auto st = membrane_stress(law, l1, l1);
-      return {(st.s1 + st.s2) / (l1 * a_), 0.0};
+      return {(st.s1 + st.s2) / (l1 * a_) + gas, 0.0};
     }
     const double l2 = a_ * std::sin(theta) / r;
     const auto st = membrane_stress(law, l1, l2);
     const double dl2 = (l1 * std::cos(theta) - l2) / r;
     const double d_rs1 = st.s1 + r * (st.ds1_dl1 * dl1 + st.ds1_dl2 * dl2);
-    return {(st.s1 / l2 + st.s2 / l1) / a_,
+    return {(st.s1 / l2 + st.s2 / l1) / a_ + gas,
             (d_rs1 - st.s2 * std::cos(theta)) / (a_ * std::sin(theta) * l1)};
   }
 
@@ -181,7 +196,9 @@ class SphereStickHistory {
       const double s1 = membrane_stress(law, l1, l2).s1;
       return FreeStart{{r * s1 * std::cos(theta), l1, l2, 0.0}, r, theta, 1.0};
     };
-    auto force = [&](double l1) { return r * membrane_stress(law, l1, l2).s1 * std::sin(theta); };
+    auto force = [&](double l1) {
+      return r * membrane_stress(law, l1, l2).s1 * std::sin(theta) + gas_load(theta);
+    };
     auto g = [&](double l1) -> std::optional<double> {
       if (!(l1 > floor)) return std::nullopt;
       const auto st = membrane_stress(law, l1, l2);
@@ -220,7 +237,7 @@ class SphereStickHistory {
   void build() const {
     built_ = true;
     end_ = StickHistoryEnd::Equator;
-    const double h = step(), l0 = part_one_.prestretch();
+    const double h = step(), l0 = first_touch_stretch();
     points_.assign(1, StuckPoint{0.0, 0.0, l0, 0.0, 0.0});
     guess_ = l0;
     // Near the first touch the march is stiff: a larger theta at R raises the edge's hoop
@@ -252,7 +269,10 @@ class SphereStickHistory {
   // stick tests.
   std::optional<double> rk4_step(double r, double theta, double dr) const {
     auto slope = [&](double at, double th) -> std::optional<double> {
-      if (!(th < 0.5 * kPi)) return std::nullopt;
+      if (!(th < 0.5 * kPi)) {
+        past_equator_ = true;  // a stage already passes it: the edge reaches it in this step
+        return std::nullopt;
+      }
       const auto e = solve_edge(at, th, guess_);
       if (!e) return std::nullopt;
       guess_ = e->l1;
@@ -270,9 +290,11 @@ class SphereStickHistory {
   static constexpr double kFirstTouchRadius = 1e-3;
   static constexpr double kStableStepFraction = 0.25;
 
-  // The history stopped before the equator: the material locked on the way.
+  // The history stopped before the equator: the material locked on the way, unless a stage of
+  // the last step already passed the equator.
   void end_at(double theta) const {
-    end_ = theta < 0.5 * kPi ? StickHistoryEnd::Locking : StickHistoryEnd::Equator;
+    end_ =
+        theta < 0.5 * kPi && !past_equator_ ? StickHistoryEnd::Locking : StickHistoryEnd::Equator;
   }
 
   const FreePart<Law>& part_one_;
@@ -280,6 +302,7 @@ class SphereStickHistory {
   int steps_;
   mutable bool built_ = false;
   mutable StickHistoryEnd end_ = StickHistoryEnd::Equator;
+  mutable bool past_equator_ = false;
   mutable std::vector<StuckPoint> points_;
   mutable std::vector<double> ratio_max_;
   mutable double guess_ = 1.0;  // the last edge stretch solved: the next solve's start  // running

@@ -481,7 +481,7 @@ class SphereTippedContact {
                                  : attach_with_side(st, record, sol, maxima);
     if (c == Configuration::Stick) {
       attach_stuck_cap(*stick_, law_, s_.a, st, record, sol);
-      sol.part_three_stretch = part_one_.prestretch();  // the pole holds as it touched
+      sol.part_three_stretch = stick_->first_touch_stretch();  // the pole holds as it touched
       return true;
     }
     if (fillet_face().on_face(sol.f))  // under a gas pressure, the fillet's face alone
@@ -1084,10 +1084,9 @@ class SphereTippedContact {
   }
   // Samples of the face under a gas pressure: as many as of the arc.
   int face_points() const { return std::max(1, part_one_.settings().field_points); }
-  // The stick stage is solved on the sphere-tipped probe without a gas pressure.
-  bool stick_solved() const {
-    return s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide && pressure_ == 0.0;
-  }
+  // The stick stage is solved on the sphere-tipped probe (under a held gas pressure too, from
+  // the inflated pole: docs/model.md §17.3).
+  bool stick_solved() const { return s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide; }
 
   // The cap's system, with the cone past the tangency for the cone probe (by position, or the
   // sphere's or the cone's equations throughout).
