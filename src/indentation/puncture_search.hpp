@@ -239,9 +239,14 @@ PuncturePrediction find_puncture_by(const Problem& p, const SolverOptions& optio
     return out;
   }
   auto sol = found ? *found : shooting.solve(stage, *f_puncture);
-  // A search that closes on the end of the stage's solutions brackets it to a few ulps and may
-  // return the side beyond (no state): the last state is an ulp or two below.
-  for (int k = 0; k < 16 && !sol.ok() && failure_kind(sol.status) == FailureKind::Physical; ++k) {
+  // A search that closes on the end of the stage's solutions (or of what the model covers: the
+  // ball's equator, the cone's shank) brackets it to a few ulps and may return the side beyond
+  // (no state): the last state is an ulp or two below.  (Which side the bracket's middle lands
+  // on follows the solves' rounding, the report should not.)
+  for (int k = 0; k < 16 && !sol.ok() &&
+                  (failure_kind(sol.status) == FailureKind::Physical ||
+                   failure_kind(sol.status) == FailureKind::OutsideModel);
+       ++k) {
     *f_puncture = std::nextafter(*f_puncture, 0.0);
     sol = shooting.solve(stage, *f_puncture);
   }

@@ -9,12 +9,14 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "foppl_sphere.hpp"
 #include "indentation/dispatch.hpp"
 #include "indentation/shooting.hpp"
 #include "mechanics/free_membrane_ode.hpp"
+#include "puncture/loading_curve.hpp"
 #include "solver_test_support.hpp"
 
 namespace puncture::detail {
@@ -318,6 +320,33 @@ TEST(BallProbe, SphereTippedToTheEquatorThenAStatus) {
   EXPECT_NE(past.message.find("neck"), std::string::npos) << past.message;
   const auto sphere_past = solve_at_depth(sphere, 20.0, Stage::Slip);
   EXPECT_TRUE(sphere_past.ok());
+}
+
+// A puncture search that closes on where the model ends (the ball's equator, the cone's shank)
+// brackets that end to a few ulps, and its middle may land past it, where no state exists: the
+// search steps below it (find_puncture_by), so that the curve's puncture reports the largest I1
+// reached there, whichever side the solves' rounding put it on.  (The ball's curve below ended
+// with the bare "before the states leave the model" when the equator onset's rounding changed.)
+TEST(BallProbe, PunctureSearchEndingAtTheModelsEndReportsTheLargestI1Reached) {
+  CurveOptions curve;
+  curve.points = 60;
+  curve.max_depth_mm = 15.0;
+  const auto ball = loading_curve(with_probe(Ball{1.0, 3.0}), curve);
+  ASSERT_TRUE(ball.ok()) << ball.message;
+  EXPECT_EQ(ball.puncture.status, Status::OutsideModel);
+  EXPECT_NE(ball.puncture.message.find("largest I1 reaches only 23.229919 (critical 95.2)"),
+            std::string::npos)
+      << ball.puncture.message;
+  EXPECT_NE(ball.puncture.message.find("neck"), std::string::npos) << ball.puncture.message;
+  curve.max_depth_mm = 20.0;
+  const auto cone = loading_curve(with_probe(Cone{3.0, 30.0, 1.0}), curve);
+  ASSERT_TRUE(cone.ok()) << cone.message;
+  EXPECT_EQ(cone.puncture.status, Status::OutsideModel);
+  EXPECT_NE(cone.puncture.message.find("largest I1 reaches only 58.867339 (critical 95.2)"),
+            std::string::npos)
+      << cone.puncture.message;
+  EXPECT_NE(cone.puncture.message.find("reaches the shank"), std::string::npos)
+      << cone.puncture.message;
 }
 
 // Small deflection of the frictionless ball: the Föppl sphere (foppl_sphere.hpp) at the same

@@ -453,6 +453,51 @@ TEST(SphereTipped, TinyForcesInTurnOnOneShooting) {
   }
 }
 
+// The equator onset Lambda_e(f) past the equator (#17): along a curve it is found by secant steps
+// from the last two onsets (their slope) and a force asked again returns its onset; from a
+// fresh contact model the root is bracketed from 1 and closed by TOMS 748 to 4 ulps.  The same
+// root either way, to V's rounding at the equator: a step accepted too early (or a wrong slope's
+// fixed point) would leave it ~1e-10 off at these forces.  The forces follow a loading curve
+// past the onset (f 0.09 to 0.25): a Jacobian's column 1e-5 away and its second at the first
+// force again, the next points ~1 % on, and jumps (beyond the secant's reach: bracketed).
+TEST(SphereTipped, EquatorOnsetFromTheLastOnesIsTheBracketedOne) {
+  const Problem p = sphere_problem();
+  const SolverOptions o;
+  const auto along = make_shooting(p, o);
+  const auto& warm = along.contact();
+  double worst_stretch = 0.0, worst_radius = 0.0;
+  for (const double f : {0.12,
+                         0.12 * (1.0 + 1e-5),
+                         0.12,
+                         0.1212,
+                         0.1212 * (1.0 + 1e-5),
+                         0.1225,
+                         0.125,
+                         0.15,
+                         0.2,
+                         0.19,
+                         0.25,
+                         0.25 * (1.0 - 3e-3),
+                         0.2,
+                         0.12}) {
+    const auto found = warm.equator_onset(f);
+    const auto fresh = make_shooting(p, o);
+    const auto bracketed = fresh.contact().equator_onset(f);
+    ASSERT_TRUE(found && bracketed) << f;
+    EXPECT_TRUE(found->end.at_equator && bracketed->end.at_equator) << f;
+    // The cap carries f at the equator (frictionless, no gas: its vertical pull).
+    EXPECT_NEAR(found->end.carried, f, 1e-13 * f) << f;
+    const double d_stretch = std::abs(found->stretch - bracketed->stretch) / bracketed->stretch;
+    const double d_radius = std::abs(found->end.r - bracketed->end.r) / bracketed->end.r;
+    EXPECT_LE(d_stretch, 1e-13) << f;
+    EXPECT_LE(d_radius, 1e-12) << f;
+    worst_stretch = std::max(worst_stretch, d_stretch);
+    worst_radius = std::max(worst_radius, d_radius);
+  }
+  record("equator_onset_stretch_secant_vs_bracketed", worst_stretch);
+  record("equator_onset_radius_secant_vs_bracketed", worst_radius);
+}
+
 // A probe of radius 20 mm on the 25 mm membrane (#17): its equator lies past the clamp for the
 // barely stretched membrane, so the cap never ends there at these forces; the states, with the
 // contact on the hemisphere, were refused as "beyond locking" up to f = 0.3 at least.  They

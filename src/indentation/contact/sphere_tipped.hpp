@@ -957,44 +957,36 @@ class SphereTippedContact {
     CapEnd end;
     InteriorMaximum<SphereCapState> i1_max;
   };
-  // V at the equator grows with the pole stretch.  A force asked again (the plan, then the
-  // attachment, at one force) returns the onset found for it (the same march).  Else the root is
-  // bracketed from the last onset found (the shooting and the depth Newton ask for nearby forces
-  // in turn), else from 1, and refined by TOMS 748 to a few ulps.
+  // V at the equator grows with the pole stretch, and the onset depends on the force alone (the
+  // cap from the pole to the equator knows nothing of Part I): a force asked again (the plan,
+  // then the attachment, at one force; a Jacobian's second column at the force of its first)
+  // returns the onset found for it (the same march).  Else secant steps from the last onsets
+  // (onset_by_secant: the depth Newton asks for nearby forces in turn); else the root is
+  // bracketed from the last onset found, else from 1, and refined by TOMS 748 to a few ulps.
   std::optional<EquatorOnset> equator_onset(double f) const {
-    if (last_onset_ && last_onset_->f == f) return last_onset_->onset;
+    for (const auto& known : onsets_)
+      if (known && known->f == f) return known->onset;
+    if (auto onset = onset_by_secant(f)) return onset;
     auto g = [&](double l) -> std::optional<double> {
       const auto end = march(l, std::numeric_limits<double>::infinity());
       if (!end) return std::nullopt;
       return capacity(*end) - f;
     };
-    // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
-    // law without locking whose V at the equator stays below f at every stretch): short of f
-    // there, by as little as f exceeds V's bound (1e-3 relative let a neo-Hookean force 2e-5
-    // beyond its limit load pass as an onset, a state at 66 mm with I1 ~ 1e23), while a true root,
-    // bracketed to a few ulps, meets it to the integration's accuracy (absolute, at the tiny
-    // forces where V at the equator crosses zero: an unstretched pole leaves the cap in hoop
-    // compression towards the equator).
-    auto found = [&](double l) -> std::optional<EquatorOnset> {
-      InteriorMaximum<SphereCapState> i1_max;
-      const auto end = march(l, std::numeric_limits<double>::infinity(), nullptr, &i1_max);
-      if (!end || !(std::abs(capacity(*end) - f) <= kOnsetMatch * f + 1e-9)) return std::nullopt;
-      last_onset_ = ForceOnset{f, EquatorOnset{l, *end, i1_max}};
-      return last_onset_->onset;
-    };
+    auto found = [&](double l) { return kept_onset(f, cap_to_equator(l)); };
     std::optional<double> root;
-    if (const double l0 = last_onset_ ? last_onset_->onset.stretch : 0.0; l0 > 1.0) {
-      const auto g0 = g(l0);
-      if (g0 && *g0 < 0.0) {
+    if (const double l0 = onsets_[0] ? onsets_[0]->onset.stretch : 0.0; l0 > 1.0) {
+      // V there is the last onset's own march.
+      const double g0 = capacity(onsets_[0]->onset.end) - f;
+      if (g0 < 0.0) {
         root = shoot_increasing(g,
                                 l0,
-                                *g0,
+                                g0,
                                 std::numeric_limits<double>::infinity(),
                                 part_one_.settings().max_iterations,
                                 1e-3 * (l0 - 1.0));
-      } else if (g0) {
+      } else {
         // Step down towards 1 until V falls below f (V = 0 at 1).
-        double hi = l0, g_hi = *g0, step = 1e-3 * (l0 - 1.0), lo = l0;
+        double hi = l0, g_hi = g0, step = 1e-3 * (l0 - 1.0), lo = l0;
         std::optional<double> g_lo;
         for (int k = 0; k < 60; ++k, step *= 2.0) {
           lo = std::max(1.0, hi - step);
@@ -1037,6 +1029,94 @@ class SphereTippedContact {
         g, 1.0, g_flat, cap, part_one_.settings().max_iterations, std::isfinite(cap) ? 0.0 : 0.05);
     if (!root) return std::nullopt;
     return found(*root);
+  }
+
+  // The onset at f by secant steps on V at the equator - f, started from the last onsets found
+  // (Lambda_e(f) through the last three, or two: the start and its slope): the pole stretch whose
+  // next step would move it by at most kOnsetStretchTol (relative) is the root, and its march,
+  // which tracked the largest I1, the onset's (no march again).  The same root as TOMS 748's to
+  // V's rounding: that closes a bracket to 4 ulps, these steps converge superlinearly from a
+  // start ~1e-10 (a Jacobian's column) to ~1e-5 (the next curve point) off until the next
+  // step is within 16 ulps, where V's rounding (1e-15 to 1e-14 relative) leaves any root: the
+  // two agree to ~1e-14 in the stretch (sphere_tipped_test).  Empty when there is no history
+  // near f, a step leaves the
+  // stretches above 1 or the material's domain, or the steps do not converge: the bracketing
+  // search runs then.
+  std::optional<EquatorOnset> onset_by_secant(double f) const {
+    if (!onsets_[0] || !onsets_[1]) return std::nullopt;
+    const ForceOnset& a = *onsets_[0];
+    const ForceOnset& b = *onsets_[1];
+    const ForceOnset& near = std::abs(f - a.f) <= std::abs(f - b.f) ? a : b;
+    if (!(std::abs(f - near.f) <= kOnsetSecantReach * f)) return std::nullopt;
+    // The start: Lambda_e(f) through the last three onsets (Newton's divided differences), else
+    // the last two; the slope dV/dLambda there.
+    const double dl_ab = (a.onset.stretch - b.onset.stretch) / (a.f - b.f);
+    double l = a.onset.stretch + (f - a.f) * dl_ab, dl_df = dl_ab;
+    if (onsets_[2] && onsets_[2]->f != a.f && onsets_[2]->f != b.f) {
+      const ForceOnset& c = *onsets_[2];
+      const double dl_bc = (b.onset.stretch - c.onset.stretch) / (b.f - c.f);
+      const double d2 = (dl_ab - dl_bc) / (a.f - c.f);
+      const double l2 = l + (f - a.f) * (f - b.f) * d2, slope2 = dl_ab + d2 * (2.0 * f - a.f - b.f);
+      if (std::isfinite(l2) && l2 > 1.0 && slope2 > 0.0 && std::isfinite(slope2)) {
+        l = l2;
+        dl_df = slope2;
+      }
+    }
+    double slope = 1.0 / dl_df, l_prev = 0.0, g_prev = 0.0;
+    if (!(slope > 0.0) || !std::isfinite(slope)) return std::nullopt;
+    for (int k = 0; k < kOnsetSecantSteps; ++k) {
+      if (!(l > 1.0) || !std::isfinite(l)) return std::nullopt;
+      auto onset = cap_to_equator(l);
+      if (!onset) return std::nullopt;
+      const double g = capacity(onset->end) - f;
+      if (k > 0 && std::abs(l - l_prev) > kOnsetSlopeSpan * l) {
+        const double s = (g - g_prev) / (l - l_prev);
+        if (s > 0.0 && std::isfinite(s)) slope = s;
+      }
+      const double step = -g / slope;
+      if (std::abs(step) <= kOnsetStretchTol * l) return kept_onset(f, std::move(onset));
+      l_prev = l;
+      g_prev = g;
+      l += step;
+    }
+    return std::nullopt;
+  }
+  // Secant steps for the onset: at most this many, from an onset whose force is within
+  // kOnsetSecantReach of f (relative; farther, the bracketing search); the last step's
+  // relative size that makes its start the root; a slope is updated only from stretches this far
+  // apart (relative: closer, V's rounding would dominate it).
+  static constexpr int kOnsetSecantSteps = 6;
+  static constexpr double kOnsetSecantReach = 0.2;
+  static constexpr double kOnsetStretchTol = 16.0 * std::numeric_limits<double>::epsilon();
+  static constexpr double kOnsetSlopeSpan = 1e-12;
+
+  // The cap marched from pole stretch l to the equator with its largest I1 tracked: a candidate
+  // onset.  Empty outside the material's domain.
+  std::optional<EquatorOnset> cap_to_equator(double l) const {
+    InteriorMaximum<SphereCapState> i1_max;
+    const auto end = march(l, std::numeric_limits<double>::infinity(), nullptr, &i1_max);
+    if (!end) return std::nullopt;
+    return EquatorOnset{l, *end, i1_max};
+  }
+  // A candidate onset for f, kept (as the last) if it carries f at the equator: far from f
+  // there when a bracketing ends where the march fails (e.g. a law without locking whose V at
+  // the equator stays below f at every stretch), while a true root meets it to the
+  // integration's accuracy (absolute, at the tiny forces where V at the equator crosses zero: an
+  // unstretched pole leaves the cap in hoop compression towards the equator).
+  std::optional<EquatorOnset> kept_onset(double f, std::optional<EquatorOnset> candidate) const {
+    // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
+    // law without locking whose V at the equator stays below f at every stretch): short of f
+    // there, by as little as f exceeds V's bound (1e-3 relative let a neo-Hookean force 2e-5
+    // beyond its limit load pass as an onset, a state at 66 mm with I1 ~ 1e23), while a true root,
+    // bracketed to a few ulps, meets it to the integration's accuracy (absolute, at the tiny
+    // forces where V at the equator crosses zero: an unstretched pole leaves the cap in hoop
+    // compression towards the equator).
+    if (!candidate || !(std::abs(capacity(candidate->end) - f) <= kOnsetMatch * f + 1e-9))
+      return std::nullopt;
+    onsets_[2] = std::move(onsets_[1]);
+    onsets_[1] = std::move(onsets_[0]);
+    onsets_[0] = ForceOnset{f, std::move(*candidate)};
+    return onsets_[0]->onset;
   }
   // Pole stretch of the onset, for the tests.
   std::optional<double> equator_onset_stretch(double f) const {
@@ -1448,14 +1528,14 @@ class SphereTippedContact {
   double side_radius_;  // radius where the curved profile ends: the cylinder's a, the shank's
   double end_psi_;      // the profile coordinate there (pi/2: the equator; the cone's kink)
   std::shared_ptr<SphereStickHistory<Law>> stick_;  // the stick stage's contact map
-  // The last equator onset found and the force it carries: the answer when that force is asked
-  // again, and the warm start for the next (one solve runs single-threaded on its own contact
-  // model, whose settings never change).
+  // The last three equator onsets found (the last first) and the forces they carry: the answers
+  // when those forces are asked again, and the start of the next (one solve runs single-threaded
+  // on its own contact model, whose settings never change).
   struct ForceOnset {
     double f;
     EquatorOnset onset;
   };
-  mutable std::optional<ForceOnset> last_onset_;
+  mutable std::array<std::optional<ForceOnset>, 3> onsets_;
   // The last cap marched to its contact edge (cap_to_edge): the free start's, which the
   // attachment at the same pole stretch and force reuses.
   mutable std::optional<CapMarch> last_cap_;
