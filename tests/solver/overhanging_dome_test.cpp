@@ -8,6 +8,7 @@
 
 #include <numbers>
 #include <utility>
+#include <vector>
 
 #include "pressurised_support.hpp"
 #include "puncture/inflation.hpp"
@@ -137,6 +138,52 @@ TEST(OverhangingDome, PunctureNearTheLimitPointIsFoundAlongThePath) {
   EXPECT_LT(puncture.depth_mm, 39.2);
   record("puncture_force_n_0.9kPa_flat", puncture.force_n);
   record("puncture_depth_mm_0.9kPa_flat", puncture.depth_mm);
+}
+
+// A 12 mm sphere on the balloon past the limit point (1 kPa, pole 96 mm above the clamp): the
+// force peaks, 2.0554 N at 49.63 mm, and falls (the balloon gives way under the probe, its pole
+// stretch from 6.5 towards the first branch's) long before the puncture (3.257 N at 174.2 mm,
+// measured with the CLI): a global limit point, the verdict's failure that comes first.  The
+// curve's located maximum has lower forces either side, and the work across it is the change of
+// Pi = U - p V (Simpson on 81 points from 40 to 60 mm): one continuous path through the peak.
+TEST(OverhangingDome, ALargeSphereOnTheBalloonPeaksBeforeItPunctures) {
+  const Problem p = overhanging(kSecondBranchMpa, SphereTipped{12.0});
+  CurveOptions c;
+  for (int k = 0; k <= 80; ++k) c.depths_mm.push_back(40.0 + 20.0 * k / 80.0);
+  const auto curve = loading_curve(p, c);
+  ASSERT_TRUE(curve.ok()) << curve.message;
+  // One force maximum (the contact shrinks as well past it, the balloon pulling its edge back).
+  std::vector<CurveEvent> maxima;
+  for (const CurveEvent& e : curve.events)
+    if (e.kind == CurveEventKind::ForceMaximum) maxima.push_back(e);
+  ASSERT_EQ(maxima.size(), 1u);
+  const CurveEvent& peak = maxima.front();
+  EXPECT_NEAR(peak.depth_mm, 49.63, 0.05);
+  EXPECT_NEAR(peak.force_n, 2.0554, 1e-4);
+  for (const auto& q : curve.points) EXPECT_LE(q.force_n, peak.force_n * (1.0 + 1e-9));
+  EXPECT_LT(curve.points.front().force_n, peak.force_n * 0.99);
+  EXPECT_LT(curve.points.back().force_n, peak.force_n * 0.9);
+  ASSERT_TRUE(curve.failure_verdict.has_value());
+  EXPECT_EQ(curve.failure_verdict->mode, FailureMode::GlobalLimitPoint);
+  EXPECT_EQ(curve.failure_verdict->depth_mm, peak.depth_mm);
+  // The work across the peak against the change of Pi.
+  const double h = 20.0 / 80.0;
+  double fine = 0.0, coarse = 0.0;
+  for (std::size_t k = 0; k <= 80; ++k) {
+    const bool end = k == 0 || k == 80;
+    fine += (end ? 1.0 : (k % 2 ? 4.0 : 2.0)) * curve.points[k].force_n;
+    if (k % 2 == 0) coarse += (end ? 1.0 : ((k / 2) % 2 ? 4.0 : 2.0)) * curve.points[k].force_n;
+  }
+  fine *= h / 3.0;
+  coarse *= 2.0 * h / 3.0;
+  const auto a = solve_at_depth(p, 40.0, Stage::Slip, sampled(2000));
+  const auto b = solve_at_depth(p, 60.0, Stage::Slip, sampled(2000));
+  ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;
+  const Quadrature pa = potential(p, a), pb = potential(p, b);
+  const double tol = std::abs(fine - coarse) + pa.error + pb.error + 1e-7 * std::abs(fine);
+  EXPECT_NEAR(pb.value - pa.value, fine, tol);
+  record("relative_difference_work_across_peak", std::abs((pb.value - pa.value) / fine - 1.0));
+  record("tolerance_relative_work_across_peak", tol / std::abs(fine));
 }
 
 }  // namespace
