@@ -1,10 +1,10 @@
 #pragma once
 // The puncture found by following the sliding loading path in depth, for a membrane inflated at
-// a held pressure whose force searches fail (docs/model.md §17, "Beyond a hemisphere"): near the
-// inflation limit point one force carries states of several inflated branches, and a force
-// search closes on another branch's.  Depth control from the dome stays on the path: it steps
-// down in depth (IndentationShooting::continue_in_depth) until the criterion is met, watching
-// the force, and locates the crossing by TOMS 748 on the depth.
+// a held pressure beyond a hemisphere, or whose force searches fail (docs/model.md §17, "Beyond a
+// hemisphere"): near the inflation limit point one force carries states of several inflated
+// branches, and a force search closes on another branch's.  Depth control from the dome stays on
+// the path: it steps down in depth (IndentationShooting::continue_in_depth), through force
+// maxima, until the criterion is met, and locates the crossing by TOMS 748 on the depth.
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
@@ -17,16 +17,18 @@ namespace puncture::detail {
 
 // What the path followed in depth meets first.
 enum class DepthPathEnd {
-  Puncture,      // the criterion is met: `state` is the puncture
-  ForceMaximum,  // the force falls from one step to the next first: `state` the last rising one
-  StatesEnd,     // no state one step deeper (the depth turns back, or the model ends): `state`
-                 // the deepest reached
-  NotStarted,    // no first state near the dome
+  Puncture,    // the criterion is met: `state` is the puncture
+  StatesEnd,   // no state one step deeper (the depth turns back, or the model ends): `state`
+               // the deepest reached
+  NotStarted,  // no first state near the dome on its branch
 };
 
 struct DepthPathResult {
   DepthPathEnd end = DepthPathEnd::NotStarted;
   ScaledSolution state;
+  // The last state before the force first falls from one step to the next (a force maximum
+  // within one step), if it does before `state`.
+  std::optional<ScaledSolution> peak;
 };
 
 // The steps in normalised depth (/ A): 1 % of the clamp radius, 0.25 mm on the paper's membrane,
@@ -60,6 +62,22 @@ std::optional<ScaledSolution> resumed_past_change(const Shooting& shooting,
 
 inline constexpr double kSameBranch = 0.05;
 
+// Where depth control cannot step on (the sphere's contact reaching its side, whose onset
+// resumed_past_change does not find near an overhang): the state at depth `target` by the
+// shooting's own search (a force search, then Newton in depth), taken only if it continues the
+// path from `last`: its pole (Part III) stretch within kSameBranch of last's and its force
+// within kSameBranch of it too (a step of 0.01 A moves them by ~1 %).
+template <class Shooting>
+std::optional<ScaledSolution> rejoined_by_force(const Shooting& shooting,
+                                                const ScaledSolution& last, double target) {
+  ScaledSolution s = shooting.solve_at_depth(Stage::Slip, target, last.f);
+  if (!s.ok() || !(std::abs(s.depth / target - 1.0) < 1e-6)) return std::nullopt;
+  if (!(std::abs(s.part_three_stretch / last.part_three_stretch - 1.0) < kSameBranch) ||
+      !(std::abs(s.f / last.f - 1.0) < kSameBranch))
+    return std::nullopt;
+  return s;
+}
+
 // Excess(state) < 0 before the puncture, >= 0 at and beyond it (the criterion's excess).
 template <class Shooting, class Excess>
 DepthPathResult puncture_along_depth(const Shooting& shooting, Excess&& excess) {
@@ -77,16 +95,14 @@ DepthPathResult puncture_along_depth(const Shooting& shooting, Excess&& excess) 
     const double target = last.depth + kDepthPathStep;
     auto next = shooting.continue_in_depth(from, target);
     if (!next) next = resumed_past_change(shooting, last, target);
+    if (!next) next = rejoined_by_force(shooting, last, target);
     if (!next || !next->ok()) {
       out.end = DepthPathEnd::StatesEnd;
       out.state = std::move(last);
       return out;
     }
-    if (next->f < last.f * (1.0 - kDepthPathForceNoise)) {
-      out.end = DepthPathEnd::ForceMaximum;
-      out.state = std::move(last);
-      return out;
-    }
+    // Depth control goes on through a force maximum (as the loading curve); the first is kept.
+    if (!out.peak && next->f < last.f * (1.0 - kDepthPathForceNoise)) out.peak = last;
     if (excess(*next) >= 0.0) {
       // The crossing between the two states, each trial state reached from the shallower one.
       const ScaledSolution below = last, above = *next;

@@ -86,6 +86,7 @@ decltype(auto) with_shooting(const Problem& problem, const SolverOptions& option
   if (auto dome = inflated_dome(problem, options)) {
     settings.pressure = dome->pressure;
     settings.dome_height = dome->height;
+    settings.dome_overhangs = overhangs_clamp(*dome);
     dome_state = std::move(dome->state);
   }
   const RuntimeLaw law(problem.material.law);

@@ -30,6 +30,9 @@ struct ShootingSettings {
   // measured from it.
   double pressure = 0.0;
   double dome_height = 0.0;
+  // Whether that dome overhangs its clamp (beyond a hemisphere): the puncture is then searched
+  // along the path in depth alone (puncture_search.hpp).
+  bool dome_overhangs = false;
 };
 
 // Part I sample: R, t, lambda1, lambda2, h.  Part II sample: R, lambda1, y.
