@@ -142,11 +142,12 @@ TEST(OverhangingDome, PunctureNearTheLimitPointIsFoundAlongThePath) {
 
 // A 12 mm sphere on the balloon past the limit point (1 kPa, pole 96 mm above the clamp): the
 // force peaks, 2.0554 N at 49.63 mm, and falls (the balloon gives way under the probe, its pole
-// stretch from 6.5 towards the first branch's) long before the puncture (3.257 N at 174.2 mm,
-// measured with the CLI): a global limit point, the verdict's failure that comes first.  The
-// curve's located maximum has lower forces either side, and the work across it is the change of
-// Pi = U - p V (Simpson on 81 points from 40 to 60 mm): one continuous path through the peak.
-TEST(OverhangingDome, ALargeSphereOnTheBalloonPeaksBeforeItPunctures) {
+// stretch from 6.5 towards the first branch's) long before any puncture (the path followed in
+// depth reaches 174.0 mm with I1 95.08, measured with the CLI): a global limit point, the
+// verdict's failure that comes first.  The curve's located maximum has lower forces either side,
+// and the work across it is the change of Pi = U - p V (Simpson on 81 points from 40 to 60 mm):
+// one continuous path through the peak.
+TEST(OverhangingDome, ALargeSphereOnTheBalloonPeaksFirst) {
   const Problem p = overhanging(kSecondBranchMpa, SphereTipped{12.0});
   CurveOptions c;
   for (int k = 0; k <= 80; ++k) c.depths_mm.push_back(40.0 + 20.0 * k / 80.0);
@@ -184,6 +185,33 @@ TEST(OverhangingDome, ALargeSphereOnTheBalloonPeaksBeforeItPunctures) {
   EXPECT_NEAR(pb.value - pa.value, fine, tol);
   record("relative_difference_work_across_peak", std::abs((pb.value - pa.value) / fine - 1.0));
   record("tolerance_relative_work_across_peak", tol / std::abs(fine));
+}
+
+// An 8 mm sphere on the balloon (1 kPa): the force search had returned 2.0708 N at 156.2 mm, a
+// state beyond the force's maximum (1.99 N at 51 mm) with the critical I1, while the path reaches
+// it at 27.1 mm; the search along the path in depth finds that one.  The loading curve's points
+// at 27.0 and 27.3 mm bracket the critical I1 and the state solved at its depth has its force.
+TEST(OverhangingDome, ALargeSphereOnTheBalloonPuncturesOnItsPath) {
+  const Problem p = overhanging(kSecondBranchMpa, SphereTipped{8.0});
+  const auto puncture = predict_puncture(p);
+  ASSERT_TRUE(puncture.ok()) << puncture.message;
+  EXPECT_NEAR(puncture.state.max_first_invariant, p.critical_i1, 1e-8 * p.critical_i1);
+  EXPECT_GT(puncture.depth_mm, 27.0);
+  EXPECT_LT(puncture.depth_mm, 27.3);
+  CurveOptions around;
+  around.depths_mm = {27.0, 27.3};
+  const auto curve = loading_curve(p, around);
+  ASSERT_TRUE(curve.ok()) << curve.message;
+  ASSERT_EQ(curve.points.size(), 2u);
+  EXPECT_LT(curve.points[0].max_first_invariant, p.critical_i1);
+  EXPECT_GT(curve.points[1].max_first_invariant, p.critical_i1);
+  EXPECT_GT(puncture.force_n, curve.points[0].force_n);
+  EXPECT_LT(puncture.force_n, curve.points[1].force_n);
+  const auto at = solve_at_depth(p, puncture.depth_mm, Stage::Slip);
+  ASSERT_TRUE(at.ok()) << at.message;
+  EXPECT_NEAR(at.force_n, puncture.force_n, 1e-7 * puncture.force_n);
+  record("puncture_force_n_1kPa_sphere8", puncture.force_n);
+  record("puncture_depth_mm_1kPa_sphere8", puncture.depth_mm);
 }
 
 }  // namespace
