@@ -259,7 +259,9 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "several (a Gent membrane past its limit point stiffens again):\n"
                      "'first' (reached by inflating slowly from flat), 'last' (the\n"
                      "stiffest) or k >= 1, the k-th in order of pole stretch ('puncture\n"
-                     "inflate --pressure P' lists them)")
+                     "inflate --pressure P' lists them).  The first is indented also\n"
+                     "beyond a hemisphere (overhanging its clamp); a later one that\n"
+                     "overhangs is not (exit 2)")
           ->group(kGeometry)
           ->capture_default_str();
   f.gas_volume_option =

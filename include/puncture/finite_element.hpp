@@ -90,8 +90,9 @@ FeState fe_solve_at_depth(const Problem& problem, double depth_mm, FeContact con
 // Under a gas pressure (Problem::preload.pressure_mpa > 0): the elements' inflated membrane before
 // contact, the minimum of U - p V from which fe_solve_at_depths starts (depth 0, no force; the
 // pole stretch as part_three_stretch, the pole's height above the clamp as -deflection_mm at
-// the first node), on `options.elements` elements linear in R.  A pressure the membrane cannot
-// hold (it bursts, snaps through or overhangs its clamp) is the state's status.  Throws
+// the first node), on `options.elements` elements linear in R (also a dome overhanging its
+// clamp).  A pressure the membrane cannot hold (it bursts or snaps through), or a later inflated
+// state that overhangs, is the state's status.  Throws
 // std::invalid_argument for an invalid problem or options, or without a pressure.
 FeState fe_inflated_state(const Problem& problem, const FeOptions& options = {});
 

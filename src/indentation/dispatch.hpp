@@ -87,6 +87,7 @@ decltype(auto) with_shooting(const Problem& problem, const SolverOptions& option
     settings.pressure = dome->pressure;
     settings.dome_height = dome->height;
     settings.dome_pole_stretch = dome->state.part_three_stretch;
+    settings.dome_overhangs = overhangs_clamp(*dome);
     dome_state = std::move(dome->state);
   }
   const RuntimeLaw law(problem.material.law);

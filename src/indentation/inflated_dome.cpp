@@ -119,20 +119,24 @@ std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOp
                     p_mpa,
                     dome.max_i1,
                     problem.critical_i1));
-  if (!(dome.clamp_slope < boost::math::constants::half_pi<double>()))
+  // A later state overhanging its clamp (every later state of the membranes tried): the force
+  // searches near zero force close on the first state's branch, whose states lie at positive
+  // depths below that higher pole (docs/model.md §17): not indented.
+  if (chosen != 1 && !(dome.clamp_slope < boost::math::constants::half_pi<double>()))
     throw PhysicalFailure(
         Status::OutsideModel,
         fmt::format(
             "at {:g} MPa the inflated membrane overhangs its clamp (slope {:.4g} rad at the "
-            "clamp): indenting a dome beyond a hemisphere is not modelled{}",
+            "clamp): indenting a later inflated state beyond a hemisphere is not modelled "
+            "(the chosen inflated state, pole stretch {:.8g}; the solver's states near "
+            "zero force lie on the first state's branch)",
             p_mpa,
             dome.clamp_slope,
-            chosen == 1 ? std::string()
-                        : fmt::format(" (the chosen inflated state, pole stretch {:.8g})",
-                                      dome.pole_stretch)));
+            dome.pole_stretch));
   InflatedDome out;
   out.pressure = dome_pressure(problem);
   out.height = dome.pole_height;
+  out.clamp_slope = dome.clamp_slope;
   ScaledSolution& s = out.state;
   s.status = Status::Converged;
   s.configuration = Configuration::Unloaded;
@@ -149,6 +153,22 @@ std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOp
     for (const auto& x : dome.samples) s.part_one.push_back({x.r_ref, x.t, x.l1, x.l2, -x.drop});
   }
   return out;
+}
+
+bool overhangs_clamp(const InflatedDome& dome) {
+  return !(dome.clamp_slope < boost::math::constants::half_pi<double>());
+}
+
+void refuse_overhanging_dome(const InflatedDome& dome, double pressure_mpa) {
+  if (overhangs_clamp(dome))
+    throw PhysicalFailure(
+        Status::OutsideModel,
+        fmt::format(
+            "at {:g} MPa the inflated membrane overhangs its clamp (slope {:.4g} rad at the "
+            "clamp): indenting a dome beyond a hemisphere over a sealed chamber is not "
+            "modelled",
+            pressure_mpa,
+            dome.clamp_slope));
 }
 
 }  // namespace puncture::detail

@@ -11,15 +11,25 @@
 namespace puncture::detail {
 
 struct InflatedDome {
-  double pressure = 0.0;  // P = p (A / L0) / (G H)
-  double height = 0.0;    // the pole's height above the clamp, / (A / L0)
-  ScaledSolution state;   // Unloaded, all of it Part I from the pole to the clamp
+  double pressure = 0.0;     // P = p (A / L0) / (G H)
+  double height = 0.0;       // the pole's height above the clamp, / (A / L0)
+  double clamp_slope = 0.0;  // the meridian's slope at the clamp [rad]: past pi/2 it overhangs
+  ScaledSolution state;      // Unloaded, all of it Part I from the pole to the clamp
 };
 
 // The inflated state at the problem's pressure that Preload::inflated_state chooses (the first,
 // reached by inflating slowly from flat, by default); empty without pressure.  Throws
 // PhysicalFailure (reported_failure.hpp) when no inflated state holds the pressure (it bursts or
-// snaps through before contact) or the dome overhangs its clamp (outside the indentation model).
+// snaps through before contact).  The first state beyond a hemisphere (overhanging its clamp) is
+// indented as it stands at a held pressure (docs/model.md §17); a later one that overhangs throws
+// PhysicalFailure (OutsideModel).
 std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOptions& options);
+
+// Whether the dome's meridian overhangs its clamp (slope at the clamp >= pi/2).
+bool overhangs_clamp(const InflatedDome& dome);
+
+// Over a sealed chamber a trial gas pressure whose dome overhangs its clamp is not searched
+// (docs/model.md §17.1): throws PhysicalFailure (OutsideModel) naming the pressure if it does.
+void refuse_overhanging_dome(const InflatedDome& dome, double pressure_mpa);
 
 }  // namespace puncture::detail

@@ -33,6 +33,9 @@ struct ShootingSettings {
   // The inflated pole's equibiaxial stretch, the stretch of the first material an indenter
   // touches under a gas pressure (0: no dome).
   double dome_pole_stretch = 0.0;
+  // Whether that dome overhangs its clamp (beyond a hemisphere): the puncture is then searched
+  // along the path in depth alone (puncture_search.hpp).
+  bool dome_overhangs = false;
 };
 
 // Part I sample: R, t, lambda1, lambda2, h.  Part II sample: R, lambda1, y.

@@ -48,12 +48,15 @@ SolverOptions with_fields(SolverOptions o) {
   return o;
 }
 
-// The inflated pole's height above the clamp plane at the problem's pressure [mm].
+// The inflated pole's height above the clamp plane at the problem's pressure [mm]; throws
+// PhysicalFailure where that dome overhangs its clamp (not searched over a sealed chamber).
 double dome_height_mm(const Problem& held, const SolverOptions& options) {
   SolverOptions quiet = options;
   quiet.record_fields = false;
   const auto dome = inflated_dome(held, quiet);
-  return dome ? dome->height * solver_scales(held).length_mm : 0.0;
+  if (!dome) return 0.0;
+  refuse_overhanging_dome(*dome, held.preload.pressure_mpa);
+  return dome->height * solver_scales(held).length_mm;
 }
 
 // A state at a held pressure seen from the sealed dome: its pole rose by `lift` [mm] above the
@@ -217,10 +220,10 @@ SealedChamber sealed_chamber(const Problem& p, const SolverOptions& options) {
   c.atmospheric_pressure_mpa = p.preload.atmospheric_pressure_mpa;
   c.sealed_pressure_mpa = p.preload.pressure_mpa;
   const Problem held = at_held_pressure(p, c.sealed_pressure_mpa);
+  c.sealed_height_mm = dome_height_mm(held, options);
   const Equilibrium dome = solve_at_depth(held, 0.0, Stage::Slip, with_fields(options));
   if (!dome.ok()) throw PhysicalFailure(dome.status, dome.message);
   c.sealed_volume_mm3 = enclosed_volume_mm3(dome.fields);
-  c.sealed_height_mm = dome_height_mm(held, options);
   return c;
 }
 
@@ -309,6 +312,7 @@ PuncturePrediction sealed_puncture(const Problem& p, const SolverOptions& option
       c.sealed_pressure_mpa,
       [&](double pressure) {
         const Problem held = at_held_pressure(p, pressure);
+        const double lift = dome_height_mm(held, options) - c.sealed_height_mm;
         AtPressure<PuncturePrediction> at{puncture_on_path(held, search, false)};
         if (!at.result.ok()) return at;
         // The puncture state with its fields, for its volume.
@@ -319,7 +323,6 @@ PuncturePrediction sealed_puncture(const Problem& p, const SolverOptions& option
           at.result.message = "the state at puncture: " + state.message;
           return at;
         }
-        const double lift = dome_height_mm(held, options) - c.sealed_height_mm;
         at.volume_mm3 = enclosed_volume_mm3(state.fields);
         measure_from_sealed_pole(state, lift, pressure, at.volume_mm3, options.record_fields);
         at.result.depth_mm -= lift;

@@ -17,10 +17,8 @@ std::optional<std::string> heading_for_global_limit(const Problem& p, const Solv
   // The dome itself at the pressure that stopped the search: it must overhang (the only
   // outside-the-model failure of a dome), not merely fail to solve.
   try {
-    inflated_dome(at_held_pressure(p, overhang_mpa), quiet);
-    return std::nullopt;
-  } catch (const PhysicalFailure& f) {
-    if (f.status() != Status::OutsideModel) return std::nullopt;
+    const auto dome = inflated_dome(at_held_pressure(p, overhang_mpa), quiet);
+    if (!dome || !overhangs_clamp(*dome)) return std::nullopt;
   } catch (const std::exception&) {
     return std::nullopt;
   }

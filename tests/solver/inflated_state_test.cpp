@@ -2,7 +2,7 @@
 // indented.  The chosen state is the inflation solver's on that branch, an index beyond the
 // states found is invalid input naming the parameter, and the paper's Gent membrane, whose
 // states at one pressure all overhang their clamp (its limit point lies past the hemisphere),
-// says so for the branch chosen.
+// says for a later branch chosen that it is not indented.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -50,9 +50,10 @@ TEST(InflatedState, LastOfOneStateIsTheFirst) {
   EXPECT_NEAR(b.force_n, a.force_n, 1e-9 * a.force_n);
 }
 
-// At 0.9 kPa the membrane has three states (pole stretches 1.82, 3.47, 6.18): each branch chosen
-// is the inflation solver's state there, and each overhangs its clamp (heights 25, 44, 85 mm on
-// A = 25 mm), outside the indentation model: a status naming the chosen state's pole stretch.
+// At 0.9 kPa the membrane has three states (pole stretches 1.82, 3.47, 6.18), each overhanging its
+// clamp (heights 25, 44, 85 mm on A = 25 mm).  The first is indented (overhanging_dome_test); a
+// later one chosen is outside the model (the force searches near zero force find the first
+// state's branch): a status naming the chosen state's pole stretch, the inflation solver's.
 TEST(InflatedState, TheChosenBranchIsTheInflationSolversState) {
   constexpr double kPressureMpa = 9e-4;
   const auto at =

@@ -201,7 +201,7 @@ TEST(Pressurised, VanishingPressureGivesTheUnpressurisedForce) {
 
 // A neo-Hookean membrane holds no pressure above its limit point (the paper's: ~8.7e-4 MPa): a
 // physical failure before contact.  Gent stiffens again beyond its limit point: at 1e-3 MPa its
-// only state is a balloon overhanging the clamp, outside the indentation model.
+// only state is a balloon overhanging the clamp, indented as it stands (overhanging_dome_test).
 TEST(Pressurised, APressureNoInflatedStateHoldsIsALimitLoad) {
   Problem neo = pressurised(1e-3);
   neo.material.law = NeoHookean{};
@@ -210,8 +210,8 @@ TEST(Pressurised, APressureNoInflatedStateHoldsIsALimitLoad) {
   EXPECT_NE(e.message.find("bursts or snaps through"), std::string::npos) << e.message;
   EXPECT_EQ(failure_kind(e.status), FailureKind::Physical);
   const auto balloon = solve_at_depth(pressurised(1e-3), 5.0, Stage::Slip);
-  EXPECT_EQ(balloon.status, Status::OutsideModel);
-  EXPECT_NE(balloon.message.find("overhangs its clamp"), std::string::npos) << balloon.message;
+  ASSERT_TRUE(balloon.ok()) << balloon.message;
+  EXPECT_GT(balloon.force_n, 0.0);
   Problem negative = pressurised(-1e-4);
   ASSERT_FALSE(validation_errors(negative).empty());
   EXPECT_EQ(validation_errors(negative).front().parameter, "preload.pressure_mpa");

@@ -1,0 +1,149 @@
+#pragma once
+// The puncture found by following the sliding loading path in depth, for a membrane inflated at
+// a held pressure beyond a hemisphere, or whose force searches fail (docs/model.md §17, "Beyond a
+// hemisphere"): near the inflation limit point one force carries states of several inflated
+// branches, and a force search closes on another branch's.  Depth control from the dome stays on
+// the path: it steps down in depth (IndentationShooting::continue_in_depth), through force
+// maxima, until the criterion is met, and locates the crossing by TOMS 748 on the depth.
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+#include "indentation/depth_newton.hpp"
+#include "indentation/scaled_solution.hpp"
+
+namespace puncture::detail {
+
+// What the path followed in depth meets first.
+enum class DepthPathEnd {
+  Puncture,    // the criterion is met: `state` is the puncture
+  StatesEnd,   // no state one step deeper (the depth turns back, or the model ends): `state`
+               // the deepest reached
+  NotStarted,  // no first state near the dome on its branch
+};
+
+struct DepthPathResult {
+  DepthPathEnd end = DepthPathEnd::NotStarted;
+  ScaledSolution state;
+  // The last state before the force first falls from one step to the next (a force maximum
+  // within one step), if it does before `state`.
+  std::optional<ScaledSolution> peak;
+};
+
+// The steps in normalised depth (/ A): 1 % of the clamp radius, 0.25 mm on the paper's membrane,
+// short against the depths where the force turns (tens of millimetres); the path is followed to
+// at most kDepthPathEnd clamp radii.
+inline constexpr double kDepthPathStep = 0.01;
+inline constexpr double kDepthPathEnd = 10.0;
+// The force a step may lose before it counts as falling (relative): the states' own noise is
+// ~1e-9 of it.
+inline constexpr double kDepthPathForceNoise = 1e-7;
+
+// Where continue_in_depth ends at the contact model's change of configuration (the flat punch's
+// Part II appears, the sphere's contact reaches its side) between `last` and depth `target`: the
+// state at `target` in the new configuration, by Newton in depth control from the change's force
+// and parameter (the new configuration starts where the old one ends, as on the loading curve).
+template <class Shooting>
+std::optional<ScaledSolution> resumed_past_change(const Shooting& shooting,
+                                                  const ScaledSolution& last, double target) {
+  const auto& contact = shooting.contact();
+  const Configuration next = contact.configuration(Stage::Slip, true);
+  if (next == last.configuration) return std::nullopt;
+  const auto change = contact.slip_change(shooting);
+  if (!change || !(change->depth > last.depth) || !(change->depth < target)) return std::nullopt;
+  const double slope = (change->f - last.f) / (change->depth - last.depth);
+  DepthNewton<Shooting> newton(shooting, shooting.settings().shooting_tol, true);
+  auto out =
+      newton.solve(next, target, change->f + slope * (target - change->depth), change->parameter);
+  if (!out || !out->ok()) return std::nullopt;
+  return out;
+}
+
+inline constexpr double kSameBranch = 0.05;
+
+// Where depth control cannot step on (the sphere's contact reaching its side, whose onset
+// resumed_past_change does not find near an overhang): the state at depth `target` by the
+// shooting's own search (a force search, then Newton in depth), taken only if it continues the
+// path from `last`: its pole (Part III) stretch within kSameBranch of last's and its force
+// within kSameBranch of it too (a step of 0.01 A moves them by ~1 %).
+template <class Shooting>
+std::optional<ScaledSolution> rejoined_by_force(const Shooting& shooting,
+                                                const ScaledSolution& last, double target) {
+  ScaledSolution s = shooting.solve_at_depth(Stage::Slip, target, last.f);
+  if (!s.ok() || !(std::abs(s.depth / target - 1.0) < 1e-6)) return std::nullopt;
+  if (!(std::abs(s.part_three_stretch / last.part_three_stretch - 1.0) < kSameBranch) ||
+      !(std::abs(s.f / last.f - 1.0) < kSameBranch))
+    return std::nullopt;
+  return s;
+}
+
+// Excess(state) < 0 before the puncture, >= 0 at and beyond it (the criterion's excess).
+template <class Shooting, class Excess>
+DepthPathResult puncture_along_depth(const Shooting& shooting, Excess&& excess) {
+  DepthPathResult out;
+  // The first state near the dome, at a small force (as the loading curve seeds its path).
+  // It must lie on the dome's branch: its pole (Part III) stretch within kSameBranch of the
+  // dome's (0.3 % apart on the paper's membrane at 0.9 kPa; the branches' 90 % and more).
+  ScaledSolution last = shooting.solve(Stage::Slip, 1e-4);
+  const ScaledSolution dome = shooting.solve(Stage::Slip, 0.0);
+  if (!last.ok() || !(last.depth > 0.0) || excess(last) >= 0.0 ||
+      !(std::abs(last.part_three_stretch / dome.part_three_stretch - 1.0) < kSameBranch))
+    return out;
+  ScaledSolution from = last;
+  while (last.depth < kDepthPathEnd) {
+    const double target = last.depth + kDepthPathStep;
+    auto next = shooting.continue_in_depth(from, target);
+    if (!next) next = resumed_past_change(shooting, last, target);
+    if (!next) next = rejoined_by_force(shooting, last, target);
+    if (!next || !next->ok()) {
+      out.end = DepthPathEnd::StatesEnd;
+      out.state = std::move(last);
+      return out;
+    }
+    // Depth control goes on through a force maximum (as the loading curve); the first is kept.
+    if (!out.peak && next->f < last.f * (1.0 - kDepthPathForceNoise)) out.peak = last;
+    if (excess(*next) >= 0.0) {
+      // The crossing between the two states, each trial state reached from the shallower one.
+      const ScaledSolution below = last, above = *next;
+      std::optional<ScaledSolution> best;
+      bool failed = false;
+      auto g = [&](double d) {
+        const double tol = shooting.settings().shooting_tol;
+        auto s = shooting.refine_at_depth(below, d, tol, true);
+        // Past a change of configuration between the two, from the deeper one.
+        if (!s || !s->ok()) s = shooting.refine_at_depth(above, d, tol, true);
+        if (!s || !s->ok()) {
+          failed = true;
+          return 0.0;
+        }
+        const double e = excess(*s);
+        if (!best || std::abs(e) < std::abs(excess(*best))) best = std::move(*s);
+        return e;
+      };
+      std::uintmax_t iterations = 60;
+      boost::math::tools::toms748_solve(g,
+                                        below.depth,
+                                        above.depth,
+                                        excess(below),
+                                        excess(above),
+                                        boost::math::tools::eps_tolerance<double>(45),
+                                        iterations);
+      if (failed || !best) {
+        out.end = DepthPathEnd::StatesEnd;
+        out.state = below;
+        return out;
+      }
+      out.end = DepthPathEnd::Puncture;
+      out.state = std::move(*best);
+      return out;
+    }
+    last = std::move(*next);
+    from = last;
+  }
+  out.end = DepthPathEnd::StatesEnd;
+  out.state = std::move(last);
+  return out;
+}
+
+}  // namespace puncture::detail
