@@ -317,11 +317,6 @@ void append_fillet_errors(std::vector<ValidationError>& errors, const Problem& p
                      "got {} mm",
                      a,
                      rho)});
-  if (p.stick.rule != StickRule::None)
-    errors.push_back({"stick.rule",
-                      fmt::format("the stick stage on the filleted flat punch is not implemented "
-                                  "yet: stick rule must be 'none', got '{}'",
-                                  to_string(p.stick.rule))});
   if (p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3)
     errors.push_back({p.preload.gas_volume_mm3 ? "preload.gas_volume_mm3" : "preload.pressure_mpa",
                       "a gas pressure under the membrane is not implemented yet for the filleted "

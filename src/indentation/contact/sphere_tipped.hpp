@@ -16,8 +16,8 @@
 //                       alone, the cap carries f at the equator.  With friction p = the pole
 //                       stretch, the side marched up from the equator (rough_side).
 //   Stick               p = 1 / R_c, R_c the contact edge: each material point held where it
-//                       touched (contact/sphere_stick.hpp); not on the fillet, the cone or under
-//                       a gas pressure.
+//                       touched (contact/sphere_stick.hpp; on the fillet, the ball and the cone
+//                       contact/profile_stick.hpp); not under a gas pressure.
 // Coulomb slip on the hemisphere and on the cylinder side (the membrane slides away from the
 // pole; friction mu p points to it).
 //
@@ -40,6 +40,7 @@
 
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
+#include "indentation/contact/profile_stick.hpp"
 #include "indentation/contact/sphere_stick.hpp"
 #include "indentation/free_part.hpp"
 #include "indentation/membrane_fields.hpp"
@@ -190,10 +191,13 @@ class SphereTippedContact {
         end_psi_(cone() ? tangency_ + (settings.shank - settings.a * std::sin(tangency_)) /
                                           (settings.a * std::cos(tangency_))
                         : kHalfPiCap),
-        stick_(std::make_shared<SphereStickHistory<Law>>(part_one, settings.a)) {}
+        stick_(std::make_shared<SphereStickHistory<Law>>(part_one, settings.a)),
+        held_profile_(std::make_shared<ProfileStickHistory<Law>>(part_one, held_profile())) {}
 
   // The stick stage's history (built on first use; shared by copies of the contact).
   const SphereStickHistory<Law>& stick_history() const { return *stick_; }
+  // ... on the filleted punch, the ball and the cone (contact/profile_stick.hpp).
+  const ProfileStickHistory<Law>& held_profile_history() const { return *held_profile_; }
 
   // The pole stretch exceeds 1.
   double parameter_floor(Configuration) const { return 1.0; }
@@ -434,7 +438,9 @@ class SphereTippedContact {
       return side_top_start(f, p);
     }
     if (c == Configuration::Stick)
-      return stick_solved() ? stick_->edge_start(1.0 / p, f) : std::nullopt;
+      return stick_solved()           ? stick_->edge_start(1.0 / p, f)
+             : held_profile_solved() ? held_profile_->edge_start(1.0 / p, f)
+                                     : std::nullopt;
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
     const auto& cap = cap_to_edge(p, f);
     if (!cap) return std::nullopt;
@@ -459,7 +465,10 @@ class SphereTippedContact {
       return rough_side_solved() ? attach_rough_side(p, record, sol, maxima)
                                  : attach_with_side(st, record, sol, maxima);
     if (c == Configuration::Stick) {
-      attach_stuck_cap(*stick_, law_, s_.a, st, record, sol);
+      if (held_profile_solved())
+        attach_held_profile(*held_profile_, law_, st, record, sol);
+      else
+        attach_stuck_cap(*stick_, law_, s_.a, st, record, sol);
       sol.part_three_stretch = part_one_.prestretch();  // the pole holds as it touched
       return true;
     }
@@ -510,6 +519,8 @@ class SphereTippedContact {
     ShootingPlan plan;
     plan.configuration = Configuration::SlipWithoutPartTwo;
     if (stage == Stage::Stick && stick_solved()) return stuck_plan(*stick_, f, counted);
+    if (stage == Stage::Stick && held_profile_solved())
+      return held_profile_plan(*held_profile_, f, counted);
     if (stage == Stage::Stick) {
       plan.configuration = Configuration::Stick;
       plan.status = Status::OutsideModel;
@@ -794,7 +805,7 @@ class SphereTippedContact {
                    g,
                    pressure,
                    // Held: the tangential traction the probe supplies (towards the pole).
-                   stuck ? stick_->traction_near(r_ref).tangential * g * u.thickness_mm / big_a
+                   stuck ? held_tangential(r_ref) * g * u.thickness_mm / big_a
                          : s_.mu * pressure);
     }
   }
@@ -1000,6 +1011,22 @@ class SphereTippedContact {
   // The stick stage is solved on the sphere-tipped probe without a gas pressure.
   bool stick_solved() const {
     return s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide && pressure_ == 0.0;
+  }
+  // ... and on the fillet, the ball and the cone by their profile (contact/profile_stick.hpp).
+  bool held_profile_solved() const { return !stick_solved() && pressure_ == 0.0; }
+  HeldProfile held_profile() const {
+    return {.arc = arc(),
+            .face = s_.face,
+            .tangency = cone() ? tangency_ : std::numeric_limits<double>::infinity(),
+            .end_psi = end_psi_,
+            .end = cone()                                  ? HeldProfileEnd::Kink
+                   : s_.beyond == BeyondTipSphere::Neck ? HeldProfileEnd::Neck
+                                                          : HeldProfileEnd::CylinderSide};
+  }
+  // The held membrane's tangential traction towards the tip at r (/ (G H / A)).
+  double held_tangential(double r) const {
+    return (held_profile_solved() ? held_profile_->traction_near(r) : stick_->traction_near(r))
+        .tangential;
   }
 
   // The cap's system, with the cone past the tangency for the cone probe (by position, or the
@@ -1358,6 +1385,7 @@ class SphereTippedContact {
   double side_radius_;  // radius where the curved profile ends: the cylinder's a, the shank's
   double end_psi_;      // the profile coordinate there (pi/2: the equator; the cone's kink)
   std::shared_ptr<SphereStickHistory<Law>> stick_;  // the stick stage's contact map
+  std::shared_ptr<ProfileStickHistory<Law>> held_profile_;  // ... on the other curved probes
   // The last equator onset found and the force it carries: the answer when that force is asked
   // again, and the warm start for the next (one solve runs single-threaded on its own contact
   // model, whose settings never change).
