@@ -438,7 +438,7 @@ class SphereTippedContact {
       return side_top_start(f, p);
     }
     if (c == Configuration::Stick)
-      return stick_solved()           ? stick_->edge_start(1.0 / p, f)
+      return stick_solved()          ? stick_->edge_start(1.0 / p, f)
              : held_profile_solved() ? held_profile_->edge_start(1.0 / p, f)
                                      : std::nullopt;
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
@@ -805,8 +805,7 @@ class SphereTippedContact {
                    g,
                    pressure,
                    // Held: the tangential traction the probe supplies (towards the pole).
-                   stuck ? held_tangential(r_ref) * g * u.thickness_mm / big_a
-                         : s_.mu * pressure);
+                   stuck ? held_tangential(r_ref) * g * u.thickness_mm / big_a : s_.mu * pressure);
     }
   }
 
@@ -1019,9 +1018,9 @@ class SphereTippedContact {
             .face = s_.face,
             .tangency = cone() ? tangency_ : std::numeric_limits<double>::infinity(),
             .end_psi = end_psi_,
-            .end = cone()                                  ? HeldProfileEnd::Kink
+            .end = cone()                               ? HeldProfileEnd::Kink
                    : s_.beyond == BeyondTipSphere::Neck ? HeldProfileEnd::Neck
-                                                          : HeldProfileEnd::CylinderSide};
+                                                        : HeldProfileEnd::CylinderSide};
   }
   // The held membrane's tangential traction towards the tip at r (/ (G H / A)).
   double held_tangential(double r) const {
@@ -1384,7 +1383,7 @@ class SphereTippedContact {
   double tangency_;     // polar angle where the tip sphere ends: pi/2, or the cone's tangency
   double side_radius_;  // radius where the curved profile ends: the cylinder's a, the shank's
   double end_psi_;      // the profile coordinate there (pi/2: the equator; the cone's kink)
-  std::shared_ptr<SphereStickHistory<Law>> stick_;  // the stick stage's contact map
+  std::shared_ptr<SphereStickHistory<Law>> stick_;          // the stick stage's contact map
   std::shared_ptr<ProfileStickHistory<Law>> held_profile_;  // ... on the other curved probes
   // The last equator onset found and the force it carries: the answer when that force is asked
   // again, and the warm start for the next (one solve runs single-threaded on its own contact
