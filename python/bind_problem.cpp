@@ -338,8 +338,8 @@ void bind_problem(py::module_& m) {
   def_outline(sphere_tipped);
   py::class_<Ball> ball(m,
                         "Ball",
-                        "A sphere of radius ball_radius_mm on a rod of radius radius_mm (sliding "
-                        "only;\nsolved up to the ball's equator)");
+                        "A sphere of radius ball_radius_mm on a rod of radius radius_mm (held "
+                        "or sliding;\nsolved up to the ball's equator)");
   ball.def(py::init([](double radius_mm, double ball_radius_mm) {
              return Ball{radius_mm, ball_radius_mm};
            }),
@@ -354,7 +354,7 @@ void bind_problem(py::module_& m) {
                         "Cone",
                         "A cone of half-angle half_angle_deg with a spherical tip of radius\n"
                         "tip_radius_mm tangent to it, on a shank of radius radius_mm "
-                        "(sliding only;\nsolved until the contact reaches the shank)");
+                        "(held or sliding;\nsolved until the contact reaches the shank)");
   cone.def(py::init([](double radius_mm, double half_angle_deg, double tip_radius_mm) {
              return Cone{radius_mm, half_angle_deg, tip_radius_mm};
            }),

@@ -189,7 +189,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "ball's equator) or\n"
                      "cone (half-angle --cone-half-angle, spherical tip of radius\n"
                      "--tip-radius tangent to it, shank of radius --indenter-radius;\n"
-                     "sliding only, solved until the contact reaches the shank)")
+                     "solved until the contact reaches the shank).  All of them held\n"
+                     "(--stick, no gas pressure) or sliding")
           ->group(kGeometry)
           ->check(CLI::IsMember(
               std::vector<std::string>(kIndenterShapes.begin(), kIndenterShapes.end())))
@@ -208,7 +209,7 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "Radius rho of the flat punch's rounded corner (a toroidal fillet\n"
                      "between the flat face, of radius a - rho, and the cylinder) [mm]\n"
                      "(>= 0 and smaller than --indenter-radius; 0: the paper's sharp\n"
-                     "corner; > 0: sliding only, --stick none)")
+                     "corner; > 0: --stick without a gas pressure)")
           ->group(kGeometry)
           ->capture_default_str();
   app.add_option("--ball-radius",
@@ -421,11 +422,12 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                  "                the indenter's edge reaches <N/mm> [N/mm] (with\n"
                  "                --prestretch: beyond the pre-tension)\n"
                  "  always        never slides (fully stuck)\n"
-                 "  coulomb       sphere-tipped probe: held where it touched while\n"
+                 "  coulomb       curved probes: held where it touched while\n"
                  "                --friction times the contact pressure holds every\n"
                  "                held point (tangential traction [MPa] <= mu p)\n"
-                 "On the sphere-tipped probe each material point is held where it\n"
-                 "touched the sphere.  Thresholds must be > 0, e.g. --stick force:0.5")
+                 "On the curved probes (sphere-tipped, ball, cone, a filleted flat\n"
+                 "punch) each material point is held where it touched the probe.\n"
+                 "Thresholds must be > 0, e.g. --stick force:0.5")
       ->group(kContact)
       ->capture_default_str();
   app.add_option("--part-two-equation",

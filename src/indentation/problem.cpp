@@ -317,10 +317,11 @@ void append_fillet_errors(std::vector<ValidationError>& errors, const Problem& p
                      "got {} mm",
                      a,
                      rho)});
-  if (p.stick.rule != StickRule::None)
+  if (p.stick.rule != StickRule::None && (p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3))
     errors.push_back({"stick.rule",
-                      fmt::format("the stick stage on the filleted flat punch is not implemented "
-                                  "yet: stick rule must be 'none', got '{}'",
+                      fmt::format("the stick stage on the filleted flat punch is solved without a "
+                                  "gas pressure so far: stick rule must be 'none' under a gas "
+                                  "pressure, got '{}'",
                                   to_string(p.stick.rule))});
 }
 

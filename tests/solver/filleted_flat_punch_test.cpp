@@ -333,8 +333,8 @@ TEST(FilletedFlatPunch, FilletToTheRadiusBecomesTheSphereTippedProbe) {
 }
 
 // Bad input names the parameter: a fillet >= the radius (that is the sphere-tipped probe),
-// negative or not finite; the stick rules, not implemented for the fillet (a gas pressure and a
-// sealed chamber are accepted).
+// negative or not finite; a stick rule under a gas pressure (a gas pressure and a sealed chamber
+// are accepted, and a stick rule without them).
 // A fillet of 0 is today's sharp punch, accepted with everything.
 TEST(FilletedFlatPunch, BadInputIsRefused) {
   for (const double rho : {2.0, 3.0, -0.1, std::nan("")}) {
@@ -343,16 +343,19 @@ TEST(FilletedFlatPunch, BadInputIsRefused) {
     EXPECT_EQ(errors.front().parameter, "indenter.fillet_radius_mm") << rho;
     EXPECT_THROW(solve_at_depth(filleted_problem(rho), 5.0, Stage::Slip), InvalidInput);
   }
-  Problem held = filleted_problem(0.5);
+  Problem held = filleted_problem(0.5);  // held: solved (docs/model.md §15.5)
   held.stick = {StickRule::Always, 0.0};
-  const auto held_errors = validation_errors(held);
-  ASSERT_EQ(held_errors.size(), 1u);
-  EXPECT_EQ(held_errors.front().parameter, "stick.rule");
+  EXPECT_TRUE(validation_errors(held).empty());
   Problem gas = filleted_problem(0.5, 0.18);  // solved (pressurised_probes_test.cpp)
   gas.preload.pressure_mpa = 1e-4;
   EXPECT_TRUE(validation_errors(gas).empty());
   gas.preload.gas_volume_mm3 = 1e6;
   EXPECT_TRUE(validation_errors(gas).empty());
+  Problem gas_held = gas;  // held under a gas pressure: not solved on the fillet
+  gas_held.stick = {StickRule::Always, 0.0};
+  const auto gas_held_errors = validation_errors(gas_held);
+  ASSERT_EQ(gas_held_errors.size(), 1u);
+  EXPECT_EQ(gas_held_errors.front().parameter, "stick.rule");
   Problem sharp_held = filleted_problem(0.0);
   sharp_held.stick = {StickRule::Always, 0.0};
   EXPECT_TRUE(validation_errors(sharp_held).empty());
