@@ -22,8 +22,7 @@
 #include "indentation/contact/sphere_stick.hpp"
 #include "indentation/free_part.hpp"
 #include "mechanics/inverse_stretch.hpp"
-#include "numerics/root_in_bracket.hpp"
-#include "numerics/shooting.hpp"
+#include "numerics/root_from_guess.hpp"
 #include "puncture/membrane_stress.hpp"
 
 namespace puncture::detail {
@@ -223,27 +222,9 @@ class ProfileStickHistory {
       if (!(st.i1 < part_one_.locking_i1()) || !std::isfinite(st.s1)) return std::nullopt;
       return part_one_.residual(force(l1), start_of(l1));
     };
-    // Bracket from the guess as on the sphere (sphere_stick.hpp): up while negative, down while
-    // positive; outside the domain counts as beyond.
-    double lo = std::max(guess, floor * (1.0 + 1e-12)), hi = lo;
-    double g_lo = residual_or_beyond(g, lo), g_hi = g_lo;
-    double d = 1e-3 * (lo - floor) + 1e-9;
-    for (int k = 0; k < 80 && g_hi < 0.0; ++k, d *= 2.0) {
-      lo = hi;
-      g_lo = g_hi;
-      hi = lo + d;
-      g_hi = residual_or_beyond(g, hi);
-    }
-    for (int k = 0; k < 80 && g_lo >= 0.0; ++k) {
-      hi = lo;
-      g_hi = g_lo;
-      lo = std::max(hi - d, floor + 0.5 * (hi - floor));
-      d *= 2.0;
-      g_lo = residual_or_beyond(g, lo);
-    }
-    if (!(g_lo < 0.0) || !(g_hi >= 0.0) || g_hi >= kBeyondDomain) return std::nullopt;
-    const double l1 =
-        root_in_bracket([&](double x) { return residual_or_beyond(g, x); }, lo, hi, g_lo, g_hi);
+    const auto l1_root = root_from_guess(g, guess, floor);
+    if (!l1_root) return std::nullopt;
+    const double l1 = *l1_root;
     const auto run = part_one_.run(force(l1), start_of(l1), nullptr, false);
     if (!run.ok) return std::nullopt;
     return EdgeSolve{l1, force(l1), run.height};
