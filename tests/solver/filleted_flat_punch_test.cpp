@@ -351,7 +351,8 @@ TEST(FilletedFlatPunch, BadInputIsRefused) {
   EXPECT_TRUE(validation_errors(gas).empty());
   gas.preload.gas_volume_mm3 = 1e6;
   EXPECT_TRUE(validation_errors(gas).empty());
-  Problem gas_held = gas;  // held under a gas pressure: not solved on the fillet
+  Problem gas_held = filleted_problem(0.5, 0.18);  // held under a gas pressure: not solved
+  gas_held.preload.pressure_mpa = 1e-4;
   gas_held.stick = {StickRule::Always, 0.0};
   const auto gas_held_errors = validation_errors(gas_held);
   ASSERT_EQ(gas_held_errors.size(), 1u);
