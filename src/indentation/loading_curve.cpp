@@ -131,7 +131,17 @@ void add_failure_verdict(const Problem& p, const SolverOptions& options, Punctur
   along.energy_to_puncture = false;
   along.failure_verdict = false;
   const LoadingCurve curve = loading_curve(p, CurveOptions{}, along);
-  if (curve.ok()) out.failure_verdict = curve.failure_verdict;
+  if (curve.ok()) {
+    out.failure_verdict = curve.failure_verdict;
+    return;
+  }
+  // No verdict is not a silent one: the prediction says why (as for the energy to puncture).
+  out.message += (out.message.empty() ? "" : "; ") +
+                 fmt::format(
+                     "no verdict on which failure comes first: the loading curve failed "
+                     "({}): {}",
+                     to_string(curve.status),
+                     curve.message);
 }
 
 }  // namespace

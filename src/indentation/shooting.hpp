@@ -330,8 +330,9 @@ class IndentationShooting {
                            failure_kind(last_failure.status) != FailureKind::Numerical;
     out.status = explained ? last_failure.status : Status::NoConvergence;
     out.message = explained ? last_failure.message
-                            : "neither the force search nor depth control reaches it: " +
-                                  last_failure.message;
+                            : "neither the force search nor depth control reaches it" +
+                                  (last_failure.message.empty() ? std::string()
+                                                                : ": " + last_failure.message);
     out.deepest_state = true;
     return out;
   }
