@@ -239,7 +239,7 @@ json fig13(const Problem& base, int points) {
 json fig14(const Problem& base, int points) {
   Problem p = base;
   p.indenter = FlatPunch{kFig14IndenterRadiusMm};
-  p.stick = {};  // sliding: under pressure the flat punch has no stick stage
+  p.stick = {};  // sliding, as the seed's Fig. 14 balloons (lubricated or dry)
   p.part_two_equation = PartTwoEquation::RingBalance;
   const bool assumed = !(base.preload.pressure_mpa > 0.0);
   if (assumed) p.preload.pressure_mpa = kFig14DefaultPressureMpa;

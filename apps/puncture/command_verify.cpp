@@ -20,7 +20,7 @@ void add_verify_command(CLI::App& app, VerifyFlags& f) {
       "the work of the force against the stored energy, and the small-deflection (Foppl)\n"
       "limit; a table of quantity, shooting, second method, difference and verdict.\n"
       "For the other probes (sphere-tipped, rounded corner, cone, ball): mu' = 0 and the\n"
-      "work (no stick stage, no Foppl disc), up to the puncture or the model's end.\n"
+      "work (not the stick stage, no Foppl disc), up to the puncture or the model's end.\n"
       "Under --pressure: mu' = 0 from the elements' own inflated dome (U - p V\n"
       "minimised, the work against its change) and the dome against the shooting's");
   f.command->footer(

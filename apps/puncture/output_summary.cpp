@@ -84,10 +84,11 @@ std::string summary_text(const VerifyReport& r) {
         "Verification: the shooting solver against independent methods\n"
         "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
         "  for their own error), minimising U - p V from their own inflated dome at mu' = 0,\n"
-        "  the membrane lying on the probe's profile (a flat punch: face, corner, side) up to\n"
-        "  a contact edge the method finds.  Under pressure there is no stick stage and no\n"
-        "  small-deflection (Foppl) check: the elements' dome against the shooting's instead;\n"
-        "  friction (mu' = {} here) is checked by the test suite's Coulomb identities.\n",
+        "  the membrane lying on the probe's profile (e.g. a flat punch: face, corner or fillet,\n"
+        "  side) up to a contact edge the method finds.  Under pressure neither the stick stage\n"
+        "  nor the small-deflection (Foppl) limit is checked: the elements' dome against the\n"
+        "  shooting's instead; friction (mu' = {} here) is checked by the test suite's Coulomb\n"
+        "  identities.\n",
         v.elements,
         v.elements / 2,
         num(r.problem.friction, "friction"));
@@ -96,9 +97,9 @@ std::string summary_text(const VerifyReport& r) {
         "Verification: the shooting solver against independent methods\n"
         "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
         "  for their own error), the membrane lying on the probe's profile up to a contact\n"
-        "  edge the method finds, minimising the stored energy at mu' = 0.  The probe has no\n"
-        "  stick stage and no small-deflection (Foppl) check; friction (mu' = {} here) is\n"
-        "  checked by the test suite's Coulomb identities.\n",
+        "  edge the method finds, minimising the stored energy at mu' = 0.  The probe's stick\n"
+        "  stage and the small-deflection (Foppl) limit are not checked; friction (mu' = {}\n"
+        "  here) is checked by the test suite's Coulomb identities.\n",
         v.elements,
         v.elements / 2,
         num(r.problem.friction, "friction"));
