@@ -27,7 +27,8 @@ TESTS = pathlib.Path(__file__).resolve().parent.parent
 CLI_DATA = TESTS / "cli"
 
 # name -> CLI arguments (without --format json).  Each law, each stick rule, both Part II
-# equations, the states, the puncture points, the inflation test, the calibrations and verify.
+# equations, the states, the puncture points, the inflation test, the calibrations, verify, the
+# curved probes and a gas pressure.
 CASES = {
     "curve_default": ["curve"],
     "curve_dry_1mm": ["curve", "--points", "60", "--indenter-radius", "1", "--friction", "1.95"],
@@ -77,6 +78,19 @@ CASES = {
                            "--hole-ratio", "1.58", "--hole-ratio-sd", "0.14"],
     "calibrate_band": ["calibrate", "band", "--critical-i1-sd", "4.8", "--friction-sd", "0.05"],
     "verify_default": ["verify", "--elements", "32", "--depths", "3"],
+    # The curved probes and a gas pressure: states at a force and punctures (their curves' points
+    # follow the depth Newton's stopping, within the curve tolerance, so no curve here).
+    "state_sphere_tipped": ["state", "--indenter", "sphere-tipped", "--force", "0.3"],
+    "state_fillet": ["state", "--fillet-radius", "0.5", "--force", "0.3"],
+    "state_ball": ["state", "--indenter", "ball", "--ball-radius", "2", "--indenter-radius", "1",
+                   "--force", "0.1"],
+    "state_cone": ["state", "--indenter", "cone", "--cone-half-angle", "30", "--tip-radius", "0.5",
+                   "--force", "0.1"],
+    "state_pressure": ["state", "--pressure", "3e-4", "--force", "0.5"],
+    "state_sphere_stick": ["state", "--indenter", "sphere-tipped", "--stick", "always", "--force",
+                           "0.3"],
+    "puncture_sphere_tipped": ["puncture", "--indenter", "sphere-tipped"],
+    "puncture_astm": ["puncture", "--test", "astm-f1306", "--friction", "0"],
 }
 
 
