@@ -19,6 +19,7 @@
 #include "mechanics/free_membrane_ode.hpp"
 #include "puncture/loading_curve.hpp"
 #include "solver_test_support.hpp"
+#include "sphere_model_energy.hpp"
 
 namespace puncture::detail {
 namespace cone_ball {
@@ -72,14 +73,9 @@ std::optional<StoredEnergy> stored_energy_at(const Shooting& shooting, double f)
   const auto st = contact.free_start(sol.configuration, f, sol.parameter);
   const auto cap = contact.march(sol.parameter, f);
   if (!st || !cap) return std::nullopt;
-  const FreeMembraneSystem<Gent, StrainsAndIntegrals> system{
-      law, TransverseLoad{f, 0.0}, law.locking_i1()};
-  StrainsAndIntegrals::State x{st->state[0], st->state[1] - 1.0, st->state[2] - 1.0, 0.0, 0.0, 0.0};
-  const IntegrationSettings integration{1e-13, 1e-15, 1000000};
-  if (!integrate_part(
-          system, x, st->r0, 1.0, integration, [](double, const auto&) { return true; }))
-    return std::nullopt;
-  return StoredEnergy{cap->state[2] + x[5], sol.depth, sol.corner_slope, sol.part_two_length};
+  const auto part_one = test::part_one_energy(law, f, *st);
+  if (!part_one) return std::nullopt;
+  return StoredEnergy{cap->state[2] + *part_one, sol.depth, sol.corner_slope, sol.part_two_length};
 }
 
 // Work conjugacy, frictionless: dU/ddelta = F (normalised de/dd = f), both differentiated in the

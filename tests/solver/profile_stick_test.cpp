@@ -19,6 +19,7 @@
 #include "mechanics/free_membrane_ode.hpp"
 #include "puncture/loading_curve.hpp"
 #include "solver_test_support.hpp"
+#include "sphere_model_energy.hpp"
 
 namespace puncture::detail {
 namespace profile_stick_test {
@@ -76,14 +77,9 @@ std::optional<ProfileHeldEnergy> profile_held_energy(const HeldShooting& shootin
   }
   const auto st = contact.free_start(Configuration::Stick, f, sol.parameter);
   if (!st) return std::nullopt;
-  const FreeMembraneSystem<Gent, StrainsAndIntegrals> system{
-      law, TransverseLoad{f, 0.0}, law.locking_i1()};
-  StrainsAndIntegrals::State x{st->state[0], st->state[1] - 1.0, st->state[2] - 1.0, 0, 0, 0};
-  const IntegrationSettings integration{1e-13, 1e-15, 1000000};
-  if (!integrate_part(
-          system, x, st->r0, 1.0, integration, [](double, const auto&) { return true; }))
-    return std::nullopt;
-  return ProfileHeldEnergy{energy + x[5], sol.depth};
+  const auto part_one = test::part_one_energy(law, f, *st);
+  if (!part_one) return std::nullopt;
+  return ProfileHeldEnergy{energy + *part_one, sol.depth};
 }
 
 // The ball (rod 1 mm, ball 2 mm) is the sphere-tipped probe of 2 mm up to its equator: the held

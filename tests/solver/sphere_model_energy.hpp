@@ -60,6 +60,21 @@ std::optional<double> rough_side_energy(const Law& law, double a, double mu, dou
   return x[2];
 }
 
+// Part I's stored energy from its start `st` (a FreeStart) to the clamp (/ (2 pi G H A^2)) at
+// force f without a gas pressure: integrated in strains with the running energy, to 1e-13; empty
+// where the integration fails.
+template <class Law, class Start>
+std::optional<double> part_one_energy(const Law& law, double f, const Start& st) {
+  using namespace puncture::detail;
+  const FreeMembraneSystem<Law, StrainsAndIntegrals> system{
+      law, TransverseLoad{f, 0.0}, law.locking_i1()};
+  StrainsAndIntegrals::State x{st.state[0], st.state[1] - 1.0, st.state[2] - 1.0, 0.0, 0.0, 0.0};
+  const IntegrationSettings integration{1e-13, 1e-15, 1000000};
+  if (!integrate_part(system, x, st.r0, 1.0, integration, [](double, const auto&) { return true; }))
+    return std::nullopt;
+  return x[5];
+}
+
 template <class Shooting>
 std::optional<EnergyAndDepth> energy_at(const Shooting& shooting, double f) {
   using namespace puncture::detail;
@@ -98,14 +113,9 @@ std::optional<EnergyAndDepth> energy_at(const Shooting& shooting, double f) {
         side_density, onset->end.r, st->r0, 15, 1e-14);
   }
   // Part I from its start, in strains with the running energy.
-  const FreeMembraneSystem<std::decay_t<decltype(law)>, StrainsAndIntegrals> system{
-      law, TransverseLoad{f, 0.0}, law.locking_i1()};
-  StrainsAndIntegrals::State x{st->state[0], st->state[1] - 1.0, st->state[2] - 1.0, 0.0, 0.0, 0.0};
-  const IntegrationSettings integration{1e-13, 1e-15, 1000000};
-  if (!integrate_part(
-          system, x, st->r0, 1.0, integration, [](double, const auto&) { return true; }))
-    return std::nullopt;
-  energy += x[5];
+  const auto part_one = part_one_energy(law, f, *st);
+  if (!part_one) return std::nullopt;
+  energy += *part_one;
   return EnergyAndDepth{energy, sol.depth, sol.configuration};
 }
 

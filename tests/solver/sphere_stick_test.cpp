@@ -16,6 +16,7 @@
 #include "mechanics/free_membrane_ode.hpp"
 #include "puncture/loading_curve.hpp"
 #include "solver_test_support.hpp"
+#include "sphere_model_energy.hpp"
 
 namespace puncture::detail {
 namespace {
@@ -63,14 +64,9 @@ std::optional<HeldEnergy> held_energy_at(const HeldSphereShooting& shooting, dou
   }
   const auto st = contact.free_start(Configuration::Stick, f, sol.parameter);
   if (!st) return std::nullopt;
-  const FreeMembraneSystem<Gent, StrainsAndIntegrals> system{
-      law, TransverseLoad{f, 0.0}, law.locking_i1()};
-  StrainsAndIntegrals::State x{st->state[0], st->state[1] - 1.0, st->state[2] - 1.0, 0, 0, 0};
-  const IntegrationSettings integration{1e-13, 1e-15, 1000000};
-  if (!integrate_part(
-          system, x, st->r0, 1.0, integration, [](double, const auto&) { return true; }))
-    return std::nullopt;
-  return HeldEnergy{energy + x[5], sol.depth};
+  const auto part_one = test::part_one_energy(law, f, *st);
+  if (!part_one) return std::nullopt;
+  return HeldEnergy{energy + *part_one, sol.depth};
 }
 
 // Work conjugacy of the held membrane: the probe's tractions act on material moving with it,
