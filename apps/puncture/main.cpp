@@ -23,9 +23,11 @@
 namespace {
 
 constexpr const char* kDescription =
-    "puncture: how a thin rubber membrane, clamped on a circle, deforms and punctures when\n"
-    "a rigid flat-ended cylindrical indenter is pushed into its centre (axisymmetric\n"
-    "nonlinear membrane theory, Gent rubber, Coulomb friction on the indenter).\n"
+    "puncture: how a thin rubber membrane, clamped on a circle (flat, pre-stretched or\n"
+    "inflated), deforms and punctures when a rigid probe is pushed into its centre: the\n"
+    "paper's flat-ended cylinder (sharp or rounded corner), a sphere-tipped probe (ASTM\n"
+    "F1306), a ball on a rod or a cone with a rounded tip (axisymmetric nonlinear membrane\n"
+    "theory, Gent and other rubbers, Coulomb friction or a held contact on the probe).\n"
     "It computes the loading curve from zero depth to puncture (default), one equilibrium\n"
     "state with all its fields, or the puncture point alone: the puncture force, depth,\n"
     "stretch under the tip and where the crack starts.  `calibrate` and `fit` derive the\n"

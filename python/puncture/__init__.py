@@ -1,4 +1,4 @@
-"""Puncture of a clamped thin rubber membrane by a rigid flat-ended cylindrical indenter.
+"""Puncture of a clamped thin rubber membrane by a rigid probe (flat, rounded, sphere-tipped, ball, cone).
 
 The C++ solver of the `puncture` project (axisymmetric nonlinear membrane theory, Gent rubber,
 Coulomb friction on the indenter; the model is docs/model.md).  Units: lengths in mm, forces in N,
