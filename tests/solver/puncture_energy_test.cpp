@@ -125,6 +125,11 @@ INSTANTIATE_TEST_SUITE_P(
         EnergyCase{"SphereTipped",
                    with_indenter(paper_problem(Gent{125.0}, 0.0), SphereTipped{2.0}),
                    true},
+        // With friction on the sphere and the side: its energy was once left empty (the
+        // smallest quadrature depths unsolved; docs/model.md §15).
+        EnergyCase{"SphereTippedFriction05",
+                   with_indenter(paper_problem(Gent{125.0}, 0.5), SphereTipped{2.0}),
+                   false},
         EnergyCase{"FlatPrestretched", prestretched(paper_problem(Gent{125.0}, 0.0), 1.25), true},
         EnergyCase{
             "Cone", with_indenter(paper_problem(Gent{125.0}, 0.0), Cone{2.0, 30.0, 0.2}), true},

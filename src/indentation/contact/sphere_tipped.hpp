@@ -686,9 +686,10 @@ class SphereTippedContact {
     }
     double hi = top;
     double g_hi = g_top;
+    // (The free start's march at (l, f), kept for the residual that may follow: cap_to_edge.)
     const auto carried = [&](double l) {
-      const auto end = march(l, f);
-      return end && !end->at_equator;
+      const auto& cap = cap_to_edge(l, f);
+      return cap && !cap->end.at_equator;
     };
     if (carried(hi * (1.0 - 1e-12))) {
       double lo = 1.0;
