@@ -8,15 +8,15 @@
 // lambda1_edge the meridional stretch with which Part I, leaving the face horizontally at R_c
 // (lambda2 = c / R_c, t = R_c s1, force P c^2 / 2), meets the clamp.  Classical Runge-Kutta on a
 // uniform grid in c up to the face's edge a, sub-stepped near the first touch where the march is
-// stiff (as the sphere's history, sphere_stick.hpp).  A held point keeps its stretches, hence
-// the tangential traction it needs: tau c lambda1 = d(R s1)/dR - s2 (the ring's radial balance on
-// the flat face, whose normal load is the gas pressure P alone).
+// stiff (as the curved probes' history, profile_stick.hpp).  A held point keeps its stretches,
+// hence the tangential traction it needs: tau c lambda1 = d(R s1)/dR - s2 (the ring's radial
+// balance on the flat face, whose normal load is the gas pressure P alone).
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
 
-#include "indentation/contact/sphere_stick.hpp"
+#include "indentation/contact/profile_stick.hpp"
 #include "indentation/free_part.hpp"
 #include "numerics/root_from_guess.hpp"
 #include "puncture/membrane_stress.hpp"

@@ -1,17 +1,27 @@
 #pragma once
-// The stick stage on the curved probes other than the sphere-tipped one (docs/model.md §15.5):
-// the filleted flat punch (a flat face, then a toroidal arc), the ball (its lower hemisphere) and
-// the cone (a tip sphere, then the straight cone up to the kink onto the shank).  Each is a
-// profile parametrised by psi = (length along it from the face's edge or the pole) / rho, rho the
-// arc's (tip sphere's) radius; a material point R held at psi(R) has
+// The stick stage on the curved probes (docs/model.md §15.4, §15.5): the sphere-tipped probe (a
+// hemisphere, then the cylinder), the filleted flat punch (a flat face, then a toroidal arc), the
+// ball (its lower hemisphere) and the cone (a tip sphere, then the straight cone up to the kink
+// onto the shank).  Each is a profile parametrised by psi = (length along it from the face's edge
+// or the pole) / rho, rho the arc's (tip sphere's) radius; a material point R held at psi(R) has
 //   lambda1 = rho dpsi/dR,  lambda2 = r(psi) / R,  slope phi(psi),
-// and the contact map is built along the loading as on the sphere (sphere_stick.hpp): the point
-// R_c joins at the edge with Part I's meridional stretch there,
-//   dpsi_c/dR_c = lambda1_edge(R_c, psi_c) / rho.
+// and the contact map is built along the loading history, parametrised by the contact edge's
+// reference radius R_c: the point R_c joins at the edge with the free membrane's meridional
+// stretch there,
+//   dpsi_c/dR_c = lambda1_edge(R_c, psi_c) / rho,
+// lambda1_edge the stretch with which Part I, leaving the profile tangentially at (R_c, psi_c)
+// with lambda2 = r(psi_c) / R_c, meets the clamp.  Classical Runge-Kutta (fourth order) on a
+// uniform grid in R_c; each stage solves the edge's lambda1 (TOMS 748 on Part I's clamp
+// residual); near the first touch, where the march is stiff, in sub-steps of a quarter of R.
+// Stuck points keep their stretches, so their tractions are frozen too: the traction demand of a
+// point is the one it had when it joined.
 // The flat face touches the flat membrane at once and holds it at the pre-stretch L0 (the sharp
 // punch's held Part III, §9); the map starts at the face's edge R_b = b / L0 with psi = 0.  The
 // march stops where the tip sphere meets the cone (its meridional curvature jumps there) and
 // restarts on the cone, so that no Runge-Kutta step spans the jump.
+// Under a held gas pressure P (§17.3) the probe first touches the inflated dome's pole, which
+// holds the dome's pole stretch; the gas presses the held membrane onto the probe (its contact
+// pressure gains P) and carries P r^2 / 2 of the force inside the edge's current radius r.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,13 +29,35 @@
 #include <vector>
 
 #include "indentation/contact/contact_model.hpp"
-#include "indentation/contact/sphere_stick.hpp"
 #include "indentation/free_part.hpp"
 #include "mechanics/inverse_stretch.hpp"
 #include "numerics/root_from_guess.hpp"
 #include "puncture/membrane_stress.hpp"
 
 namespace puncture::detail {
+
+// One grid point of the history: the material point R that joined the contact at the edge.
+struct StuckPoint {
+  double r = 0.0;      // reference radius / (A / L0)
+  double theta = 0.0;  // where it holds: psi (the polar angle theta on a sphere)
+  double l1 = 1.0;     // its meridional stretch (the free membrane's at the edge when it joined)
+  double f = 0.0;      // the force then, / (2 pi G H A / L0)
+  double depth = 0.0;  // the depth then, / (A / L0)
+};
+
+// The tractions the probe must supply to hold a stuck point (normalised by G H / A): the
+// contact pressure p (normal balance, as sliding) and the tangential traction tau towards the
+// tip, tau r lambda1 = d(R s1)/dR - s2 cos(phi) (tangential balance).
+struct StuckTraction {
+  double pressure = 0.0;
+  double tangential = 0.0;
+};
+
+// |tau| / p of a held point (beyond the domain where p <= 0 with a traction).
+inline double held_traction_ratio_of(const StuckTraction& t) {
+  return t.pressure > 0.0 ? std::abs(t.tangential) / t.pressure
+                          : (t.tangential == 0.0 ? 0.0 : kBeyondDomain);
+}
 
 // What ends the curved profile a held membrane may lie on.
 enum class HeldProfileEnd {
@@ -90,6 +122,17 @@ class ProfileStickHistory {
   }
   // The face's edge, where the map starts (0 without a face).
   double start() const { return q_.face / part_one_.prestretch(); }
+  // The stretch of the first material touched: the inflated dome's pole's under a gas pressure
+  // (docs/model.md §17.3), else the pre-stretch L0.
+  double first_touch_stretch() const {
+    const double pole = part_one_.settings().dome_pole_stretch;
+    return pole > 0.0 && q_.face == 0.0 ? pole : part_one_.prestretch();
+  }
+  // The gas pressure's resultant on the held membrane inside psi, P r(psi)^2 / 2 (0 without).
+  double gas_load(double psi, bool cone) const {
+    const double radius = q_.radius(psi, cone);
+    return 0.5 * part_one_.pressure() * radius * radius;
+  }
   double step() const { return q_.arc * q_.end_psi / part_one_.prestretch() / steps_; }
 
   // psi at reference radius r in [start, last grid point]: the cubic Hermite interpolant of
@@ -118,14 +161,18 @@ class ProfileStickHistory {
   }
 
   // Part I leaving the profile tangentially at the edge R_c at force f (t = R s1 cos(phi), R s1
-  // sin(phi) = f); empty beyond the history or outside the material's domain.
+  // sin(phi) = f less the gas's resultant inside the edge); empty beyond the history or outside
+  // the material's domain.
   std::optional<FreeStart> edge_start(double r, double f) const {
     const auto psi = psi_at(r);
     if (!psi || !(*psi > 0.0) || !(f > 0.0)) return std::nullopt;
-    const double phi = q_.slope(*psi), l2 = q_.radius(*psi) / r;
-    const auto l1 = invert_radial_stress(part_one_.law(), f / (r * std::sin(phi)), l2);
+    const bool cone = q_.on_cone(*psi);
+    const double pull = f - gas_load(*psi, cone);
+    if (!(pull > 0.0)) return std::nullopt;
+    const double phi = q_.slope(*psi, cone), l2 = q_.radius(*psi, cone) / r;
+    const auto l1 = invert_radial_stress(part_one_.law(), pull / (r * std::sin(phi)), l2);
     if (!l1) return std::nullopt;
-    return FreeStart{{f / std::tan(phi), *l1, l2, 0.0}, r, phi, 1.0};
+    return FreeStart{{pull / std::tan(phi), *l1, l2, 0.0}, r, phi, 1.0};
   }
 
   // The tractions at grid point k (lambda1' by central differences of fourth order, one-sided
@@ -156,14 +203,16 @@ class ProfileStickHistory {
     return traction_at(p[k].r, p[k].theta, p[k].l1, dl1);
   }
 
-  // Normal balance p = s1 kappa1 / lambda2 + s2 sin(phi) / (lambda1 r); tangential (towards the
-  // tip) tau r lambda1 = d(R s1)/dR - s2 cos(phi), d(R s1)/dR = s1 + R (ds1/dl1 lambda1' +
-  // ds1/dl2 lambda2'), lambda2' = (lambda1 cos(phi) - lambda2) / R.  At the pole both limits.
+  // Normal balance p = s1 kappa1 / lambda2 + s2 sin(phi) / (lambda1 r) + P (the gas presses the
+  // membrane onto the probe); tangential (towards the tip) tau r lambda1 = d(R s1)/dR - s2
+  // cos(phi), d(R s1)/dR = s1 + R (ds1/dl1 lambda1' + ds1/dl2 lambda2'), lambda2' = (lambda1
+  // cos(phi) - lambda2) / R.  At the pole both limits.
   StuckTraction traction_at(double r, double psi, double l1, double dl1) const {
     const auto& law = part_one_.law();
+    const double gas = part_one_.pressure();
     if (r == 0.0) {
       const auto st = membrane_stress(law, l1, l1);
-      return {(st.s1 + st.s2) / (l1 * q_.arc), 0.0};
+      return {(st.s1 + st.s2) / (l1 * q_.arc) + gas, 0.0};
     }
     const bool cone = q_.on_cone(psi);
     const double radius = q_.radius(psi, cone), phi = q_.slope(psi, cone);
@@ -171,7 +220,7 @@ class ProfileStickHistory {
     const auto st = membrane_stress(law, l1, l2);
     const double dl2 = (l1 * std::cos(phi) - l2) / r;
     const double d_rs1 = st.s1 + r * (st.ds1_dl1 * dl1 + st.ds1_dl2 * dl2);
-    return {st.s1 * q_.curvature(cone) / l2 + st.s2 * std::sin(phi) / (l1 * radius),
+    return {st.s1 * q_.curvature(cone) / l2 + st.s2 * std::sin(phi) / (l1 * radius) + gas,
             (d_rs1 - st.s2 * std::cos(phi)) / (radius * l1)};
   }
 
@@ -194,16 +243,17 @@ class ProfileStickHistory {
     if (ratio_max_.size() != p.size()) {
       ratio_max_.assign(p.size(), 0.0);
       for (std::size_t k = 1; k < p.size(); ++k)
-        ratio_max_[k] = std::max(ratio_max_[k - 1], SphereStickHistory<Law>::ratio(traction(k)));
+        ratio_max_[k] = std::max(ratio_max_[k - 1], held_traction_ratio_of(traction(k)));
     }
     const double x = (r - start()) / step();
     const std::size_t below =
         std::min(p.size() - 1, static_cast<std::size_t>(std::ceil(x)) - (x > 0.0 ? 1 : 0));
-    return std::max(ratio_max_[below], SphereStickHistory<Law>::ratio(traction_near(r)));
+    return std::max(ratio_max_[below], held_traction_ratio_of(traction_near(r)));
   }
 
-  // lambda1 of the edge's Part I at (r, psi) (the profile's formulas by `cone`), the force and
-  // Part I's height; empty when no stretch meets the clamp.
+  // lambda1 of the edge's Part I at (r, psi) (the profile's formulas by `cone`), the force (the
+  // membrane's pull and the gas's resultant inside the edge) and Part I's height; empty when no
+  // stretch meets the clamp.
   struct EdgeSolve {
     double l1, f, height;
   };
@@ -215,7 +265,10 @@ class ProfileStickHistory {
       const double s1 = membrane_stress(law, l1, l2).s1;
       return FreeStart{{r * s1 * std::cos(phi), l1, l2, 0.0}, r, phi, 1.0};
     };
-    auto force = [&](double l1) { return r * membrane_stress(law, l1, l2).s1 * std::sin(phi); };
+    const double gas = gas_load(psi, cone);
+    auto force = [&](double l1) {
+      return r * membrane_stress(law, l1, l2).s1 * std::sin(phi) + gas;
+    };
     auto g = [&](double l1) -> std::optional<double> {
       if (!(l1 > floor)) return std::nullopt;
       const auto st = membrane_stress(law, l1, l2);
@@ -245,11 +298,12 @@ class ProfileStickHistory {
   void build() const {
     built_ = true;
     end_ = ProfileHistoryEnd::GridEnd;
-    const double h = step(), l0 = part_one_.prestretch(), r0 = start();
+    const double h = step(), l0 = first_touch_stretch(), r0 = start();
     points_.assign(1, StuckPoint{r0, 0.0, l0, 0.0, 0.0});
     guess_ = l0;
-    // The first material the arc holds is the flat membrane's at L0: the march starts a little
-    // past the face's edge (or the pole) from psi = L0 (R - R_b) / rho, strains ~1e-6 there, in
+    // The first material the arc holds is the flat membrane's at L0 (the dome's pole's under a
+    // gas pressure): the march starts a little past the face's edge (or the pole) from psi = L0
+    // (R - R_b) / rho, strains ~1e-6 there, in
     // sub-steps of a quarter of R where those are shorter than the grid's (near the pole the
     // march is stiff, ~ -3 / R, as on the sphere).
     const double dr0 = std::min(kFirstTouch * q_.arc, 0.25 * h);
@@ -373,9 +427,13 @@ ShootingPlan held_profile_end_plan(const ProfileStickHistory<Law>& history) {
       switch (history.profile().end) {
         case HeldProfileEnd::CylinderSide:
           plan.status = Status::StickWrapsSide;
-          plan.message =
-              "at this force the membrane held where it touched the fillet reaches its "
-              "equator: it would wrap the punch's cylinder side, outside the stick model";
+          plan.message = history.profile().face > 0.0
+                             ? "at this force the membrane held where it touched the fillet "
+                               "reaches its equator: it would wrap the punch's cylinder side, "
+                               "outside the stick model"
+                             : "at this force the membrane held where it touched the sphere "
+                               "reaches the sphere's equator: it would wrap the cylinder side, "
+                               "outside the stick model";
           break;
         case HeldProfileEnd::Neck:
           plan.status = Status::OutsideModel;

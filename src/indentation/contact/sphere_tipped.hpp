@@ -16,8 +16,8 @@
 //                       alone, the cap carries f at the equator.  With friction p = the pole
 //                       stretch, the side marched up from the equator (rough_side).
 //   Stick               p = 1 / R_c, R_c the contact edge: each material point held where it
-//                       touched (contact/sphere_stick.hpp; on the fillet, the ball and the cone
-//                       contact/profile_stick.hpp); not under a gas pressure.
+//                       touched (contact/profile_stick.hpp, every profile); under a gas
+//                       pressure on the sphere-tipped probe only so far.
 // Coulomb slip on the hemisphere and on the cylinder side (the membrane slides away from the
 // pole; friction mu p points to it).
 //
@@ -42,7 +42,6 @@
 #include "indentation/contact/fillet_face_under_gas.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
 #include "indentation/contact/profile_stick.hpp"
-#include "indentation/contact/sphere_stick.hpp"
 #include "indentation/free_part.hpp"
 #include "indentation/membrane_fields.hpp"
 #include "mechanics/inverse_stretch.hpp"
@@ -195,12 +194,10 @@ class SphereTippedContact {
         end_psi_(cone() ? tangency_ + (settings.shank - settings.a * std::sin(tangency_)) /
                                           (settings.a * std::cos(tangency_))
                         : kHalfPiCap),
-        stick_(std::make_shared<SphereStickHistory<Law>>(part_one, settings.a)),
         held_profile_(std::make_shared<ProfileStickHistory<Law>>(part_one, held_profile())) {}
 
-  // The stick stage's history (built on first use; shared by copies of the contact).
-  const SphereStickHistory<Law>& stick_history() const { return *stick_; }
-  // ... on the filleted punch, the ball and the cone (contact/profile_stick.hpp).
+  // The stick stage's history (contact/profile_stick.hpp; built on first use, shared by copies
+  // of the contact).
   const ProfileStickHistory<Law>& held_profile_history() const { return *held_profile_; }
 
   // The pole stretch exceeds 1.
@@ -458,9 +455,7 @@ class SphereTippedContact {
       return side_top_start(f, p);
     }
     if (c == Configuration::Stick)
-      return stick_solved()          ? stick_->edge_start(1.0 / p, f)
-             : held_profile_solved() ? held_profile_->edge_start(1.0 / p, f)
-                                     : std::nullopt;
+      return held_profile_solved() ? held_profile_->edge_start(1.0 / p, f) : std::nullopt;
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
     if (fillet_face().on_face(f)) return fillet_face().start(f, p);
     const auto& cap = cap_to_edge(p, f);
@@ -486,13 +481,9 @@ class SphereTippedContact {
       return rough_side_solved() ? attach_rough_side(p, record, sol, maxima)
                                  : attach_with_side(st, record, sol, maxima);
     if (c == Configuration::Stick) {
-      if (held_profile_solved())
-        attach_held_profile(*held_profile_, law_, st, record, sol);
-      else
-        attach_stuck_cap(*stick_, law_, s_.a, st, record, sol);
+      attach_held_profile(*held_profile_, law_, st, record, sol);
       // The pole holds as it touched (the dome's pole stretch under a gas pressure).
-      sol.part_three_stretch =
-          held_profile_solved() ? part_one_.prestretch() : stick_->first_touch_stretch();
+      sol.part_three_stretch = held_profile_->first_touch_stretch();
       return true;
     }
     if (fillet_face().on_face(sol.f))  // under a gas pressure, the fillet's face alone
@@ -543,7 +534,6 @@ class SphereTippedContact {
   ShootingPlan plan(Stage stage, double f, Residual&& counted) const {
     ShootingPlan plan;
     plan.configuration = Configuration::SlipWithoutPartTwo;
-    if (stage == Stage::Stick && stick_solved()) return stuck_plan(*stick_, f, counted);
     if (stage == Stage::Stick && held_profile_solved())
       return held_profile_plan(*held_profile_, f, counted);
     if (stage == Stage::Stick) {
@@ -1176,11 +1166,11 @@ class SphereTippedContact {
   }
   // Samples of the face under a gas pressure: as many as of the arc.
   int face_points() const { return std::max(1, part_one_.settings().field_points); }
-  // The stick stage is solved on the sphere-tipped probe (under a held gas pressure too, from
-  // the inflated pole: docs/model.md §17.3).
-  bool stick_solved() const { return s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide; }
-  // ... and on the fillet, the ball and the cone by their profile (contact/profile_stick.hpp).
-  bool held_profile_solved() const { return !stick_solved() && pressure_ == 0.0; }
+  // The stick stage is solved on every profile (contact/profile_stick.hpp); under a held gas
+  // pressure (from the inflated pole: docs/model.md §17.3) on the sphere-tipped probe so far.
+  bool held_profile_solved() const {
+    return pressure_ == 0.0 || (s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide);
+  }
   HeldProfile held_profile() const {
     return {.arc = arc(),
             .face = s_.face,
@@ -1191,10 +1181,7 @@ class SphereTippedContact {
                                                         : HeldProfileEnd::CylinderSide};
   }
   // The held membrane's tangential traction towards the tip at r (/ (G H / A)).
-  double held_tangential(double r) const {
-    return (held_profile_solved() ? held_profile_->traction_near(r) : stick_->traction_near(r))
-        .tangential;
-  }
+  double held_tangential(double r) const { return held_profile_->traction_near(r).tangential; }
 
   // The cap's system, with the cone past the tangency for the cone probe (by position, or the
   // sphere's or the cone's equations throughout).
@@ -1555,8 +1542,7 @@ class SphereTippedContact {
   double tangency_;     // polar angle where the tip sphere ends: pi/2, or the cone's tangency
   double side_radius_;  // radius where the curved profile ends: the cylinder's a, the shank's
   double end_psi_;      // the profile coordinate there (pi/2: the equator; the cone's kink)
-  std::shared_ptr<SphereStickHistory<Law>> stick_;          // the stick stage's contact map
-  std::shared_ptr<ProfileStickHistory<Law>> held_profile_;  // ... on the other curved probes
+  std::shared_ptr<ProfileStickHistory<Law>> held_profile_;  // the stick stage's contact map
   // The last three equator onsets found (the last first) and the forces they carry: the answers
   // when those forces are asked again, and the start of the next (one solve runs single-threaded
   // on its own contact model, whose settings never change).
