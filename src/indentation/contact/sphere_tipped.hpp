@@ -16,8 +16,8 @@
 //                       alone, the cap carries f at the equator.  With friction p = the pole
 //                       stretch, the side marched up from the equator (rough_side).
 //   Stick               p = 1 / R_c, R_c the contact edge: each material point held where it
-//                       touched (contact/profile_stick.hpp, every profile); under a gas
-//                       pressure on the sphere-tipped probe only so far.
+//                       touched (contact/profile_stick.hpp, every profile); under a held gas
+//                       pressure on every probe but the filleted flat punch so far.
 // Coulomb slip on the hemisphere and on the cylinder side (the membrane slides away from the
 // pole; friction mu p points to it).
 //
@@ -1167,10 +1167,8 @@ class SphereTippedContact {
   // Samples of the face under a gas pressure: as many as of the arc.
   int face_points() const { return std::max(1, part_one_.settings().field_points); }
   // The stick stage is solved on every profile (contact/profile_stick.hpp); under a held gas
-  // pressure (from the inflated pole: docs/model.md §17.3) on the sphere-tipped probe so far.
-  bool held_profile_solved() const {
-    return pressure_ == 0.0 || (s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide);
-  }
+  // pressure (from the inflated pole: docs/model.md §17.3) on those without a flat face so far.
+  bool held_profile_solved() const { return pressure_ == 0.0 || s_.face == 0.0; }
   HeldProfile held_profile() const {
     return {.arc = arc(),
             .face = s_.face,
