@@ -209,7 +209,7 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "Radius rho of the flat punch's rounded corner (a toroidal fillet\n"
                      "between the flat face, of radius a - rho, and the cylinder) [mm]\n"
                      "(>= 0 and smaller than --indenter-radius; 0: the paper's sharp\n"
-                     "corner; > 0: --stick without a gas pressure)")
+                     "corner)")
           ->group(kGeometry)
           ->capture_default_str();
   app.add_option("--ball-radius",
@@ -427,9 +427,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                  "                held point (tangential traction [MPa] <= mu p)\n"
                  "On the curved probes (sphere-tipped, ball, cone, a filleted flat\n"
                  "punch) each material point is held where it touched the probe.\n"
-                 "Under --pressure every probe is held from the inflated dome but\n"
-                 "the filleted flat punch (refused); over a sealed chamber\n"
-                 "(--gas-volume) only 'none' is solved.\n"
+                 "Under --pressure every probe is held from the inflated dome; over\n"
+                 "a sealed chamber (--gas-volume) only 'none' is solved.\n"
                  "Thresholds must be > 0, e.g. --stick force:0.5")
       ->group(kContact)
       ->capture_default_str();

@@ -21,7 +21,10 @@
 // restarts on the cone, so that no Runge-Kutta step spans the jump.
 // Under a held gas pressure P (§17.3) the probe first touches the inflated dome's pole, which
 // holds the dome's pole stretch; the gas presses the held membrane onto the probe (its contact
-// pressure gains P) and carries P r^2 / 2 of the force inside the edge's current radius r.
+// pressure gains P) and carries P r^2 / 2 of the force inside the edge's current radius r.  The
+// filleted punch's face then holds a disc that grows with the force (flat_punch_held_face.hpp,
+// the sharp punch's held face) until it reaches the face's edge; the arc's map starts there,
+// from the face's material and stretch at its edge.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,35 +32,14 @@
 #include <vector>
 
 #include "indentation/contact/contact_model.hpp"
+#include "indentation/contact/flat_punch_held_face.hpp"
+#include "indentation/contact/stuck_traction.hpp"
 #include "indentation/free_part.hpp"
 #include "mechanics/inverse_stretch.hpp"
 #include "numerics/root_from_guess.hpp"
 #include "puncture/membrane_stress.hpp"
 
 namespace puncture::detail {
-
-// One grid point of the history: the material point R that joined the contact at the edge.
-struct StuckPoint {
-  double r = 0.0;      // reference radius / (A / L0)
-  double theta = 0.0;  // where it holds: psi (the polar angle theta on a sphere)
-  double l1 = 1.0;     // its meridional stretch (the free membrane's at the edge when it joined)
-  double f = 0.0;      // the force then, / (2 pi G H A / L0)
-  double depth = 0.0;  // the depth then, / (A / L0)
-};
-
-// The tractions the probe must supply to hold a stuck point (normalised by G H / A): the
-// contact pressure p (normal balance, as sliding) and the tangential traction tau towards the
-// tip, tau r lambda1 = d(R s1)/dR - s2 cos(phi) (tangential balance).
-struct StuckTraction {
-  double pressure = 0.0;
-  double tangential = 0.0;
-};
-
-// |tau| / p of a held point (beyond the domain where p <= 0 with a traction).
-inline double held_traction_ratio_of(const StuckTraction& t) {
-  return t.pressure > 0.0 ? std::abs(t.tangential) / t.pressure
-                          : (t.tangential == 0.0 ? 0.0 : kBeyondDomain);
-}
 
 // What ends the curved profile a held membrane may lie on.
 enum class HeldProfileEnd {
@@ -109,7 +91,10 @@ class ProfileStickHistory {
 
   ProfileStickHistory(const FreePart<Law>& part_one, const HeldProfile& profile,
                       int steps = kDefaultSteps)
-      : part_one_(part_one), q_(profile), steps_(steps) {}
+      : part_one_(part_one), q_(profile), steps_(steps) {
+    if (q_.face > 0.0 && part_one.pressure() > 0.0)
+      face_.emplace(part_one, q_.face, first_touch_stretch());
+  }
 
   const HeldProfile& profile() const { return q_; }
   const std::vector<StuckPoint>& points() const {
@@ -120,13 +105,19 @@ class ProfileStickHistory {
     if (!built_) build();
     return end_;
   }
-  // The face's edge, where the map starts (0 without a face).
-  double start() const { return q_.face / part_one_.prestretch(); }
+  // The held face under a gas pressure (none without a face or a pressure).
+  const HeldFaceHistory<Law>* face_map() const { return face_ ? &*face_ : nullptr; }
+  // The face's edge, where the map starts (0 without a face; under a gas pressure the material
+  // the held face's disc reached it with, infinite if it locked before).
+  double start() const {
+    if (!face_) return q_.face / part_one_.prestretch();
+    return face_->complete() ? face_->points().back().r : std::numeric_limits<double>::infinity();
+  }
   // The stretch of the first material touched: the inflated dome's pole's under a gas pressure
   // (docs/model.md §17.3), else the pre-stretch L0.
   double first_touch_stretch() const {
     const double pole = part_one_.settings().dome_pole_stretch;
-    return pole > 0.0 && q_.face == 0.0 ? pole : part_one_.prestretch();
+    return pole > 0.0 ? pole : part_one_.prestretch();
   }
   // The gas pressure's resultant on the held membrane inside psi, P r(psi)^2 / 2 (0 without).
   double gas_load(double psi, bool cone) const {
@@ -236,10 +227,12 @@ class ProfileStickHistory {
             lo.tangential + s * (hi.tangential - lo.tangential)};
   }
 
-  // The largest |tau| / p of the held points inside r: each keeps the tractions it joined with.
+  // The largest |tau| / p of the held points inside r: each keeps the tractions it joined with
+  // (under a gas pressure the held face's first; inside it, HeldFaceHistory::held_ratio).
   double held_ratio(double r) const {
     const auto& p = points();
-    if (p.size() < 3 || r < start()) return 0.0;
+    const double face = face_ ? face_->held_ratio(q_.face) : 0.0;
+    if (p.size() < 3 || r < start()) return face;
     if (ratio_max_.size() != p.size()) {
       ratio_max_.assign(p.size(), 0.0);
       for (std::size_t k = 1; k < p.size(); ++k)
@@ -248,7 +241,7 @@ class ProfileStickHistory {
     const double x = (r - start()) / step();
     const std::size_t below =
         std::min(p.size() - 1, static_cast<std::size_t>(std::ceil(x)) - (x > 0.0 ? 1 : 0));
-    return std::max(ratio_max_[below], held_traction_ratio_of(traction_near(r)));
+    return std::max({face, ratio_max_[below], held_traction_ratio_of(traction_near(r))});
   }
 
   // lambda1 of the edge's Part I at (r, psi) (the profile's formulas by `cone`), the force (the
@@ -298,8 +291,20 @@ class ProfileStickHistory {
   void build() const {
     built_ = true;
     end_ = ProfileHistoryEnd::GridEnd;
-    const double h = step(), l0 = first_touch_stretch(), r0 = start();
-    points_.assign(1, StuckPoint{r0, 0.0, l0, 0.0, 0.0});
+    const double h = step(), r0 = start();
+    double l0 = first_touch_stretch(), f0 = 0.0, depth0 = 0.0;
+    if (face_) {
+      // From the held face's edge: its material, stretch and force P b^2 / 2.
+      if (!face_->complete()) {
+        end_ = ProfileHistoryEnd::Locking;
+        points_.clear();
+        return;
+      }
+      l0 = face_->points().back().l1;
+      f0 = gas_load(0.0, false);
+      if (const auto e = solve_edge(r0, 0.0, false, l0)) depth0 = e->height;
+    }
+    points_.assign(1, StuckPoint{r0, 0.0, l0, f0, depth0});
     guess_ = l0;
     // The first material the arc holds is the flat membrane's at L0 (the dome's pole's under a
     // gas pressure): the march starts a little past the face's edge (or the pole) from psi = L0
@@ -411,9 +416,10 @@ class ProfileStickHistory {
   mutable bool built_ = false;
   mutable bool past_end_ = false;  // a Runge-Kutta stage passed the profile's end
   mutable ProfileHistoryEnd end_ = ProfileHistoryEnd::GridEnd;
-  mutable std::vector<StuckPoint> points_;  // theta holds psi
-  mutable std::vector<double> ratio_max_;   // running largest |tau| / p over the grid
-  mutable double guess_ = 1.0;              // the last edge stretch solved: the next's start
+  mutable std::vector<StuckPoint> points_;    // theta holds psi
+  mutable std::vector<double> ratio_max_;     // running largest |tau| / p over the grid
+  mutable double guess_ = 1.0;                // the last edge stretch solved: the next's start
+  std::optional<HeldFaceHistory<Law>> face_;  // the held face under a gas pressure
 };
 
 // Why the held states end at the history's last point: the profile's end (a status naming what
@@ -472,6 +478,8 @@ ShootingPlan held_profile_plan(const ProfileStickHistory<Law>& history, double f
   ShootingPlan plan;
   plan.configuration = Configuration::Stick;
   const auto& p = history.points();
+  if (p.size() < 4 && history.end() == ProfileHistoryEnd::Locking)
+    return held_profile_end_plan(history);
   if (p.size() < 4) {
     plan.status = Status::NoConvergence;
     plan.message = "the stick history on the probe could not be started from the first touch";
@@ -503,16 +511,64 @@ ShootingPlan held_profile_plan(const ProfileStickHistory<Law>& history, double f
   return plan;
 }
 
-// The held profile once Part I is integrated from the edge `st`: the face (uniform at L0, its
-// samples), the grid points inside the edge, then the edge; the largest I1 and the hoop
-// compression on the profile; the height of the edge above the tip.
+// The held face's grid points under a gas pressure with current radius c < c_end: their largest
+// I1 and hoop compression and, with `record`, their samples (R, lambda1, psi = (c - b) / rho < 0,
+// so that the fields know each point's current radius).
+template <class Law>
+void track_held_face(const HeldFaceHistory<Law>& face, const HeldProfile& q, const Law& law,
+                     double c_end, bool record, ScaledSolution& sol) {
+  for (const HeldFacePoint& p : face.points()) {
+    if (!(p.c < c_end)) break;
+    const double l2 = p.r > 0.0 ? p.c / p.r : p.l1;
+    const double i1 = membrane_stress(law, p.l1, l2).i1;
+    if (i1 > sol.max_i1) {
+      sol.max_i1 = i1;
+      sol.max_i1_r = p.r;
+      sol.max_i1_radius = p.c;
+    }
+    if (sol.wrinkle_r < 0.0 && p.r > 0.0 && hoop_compressive(p.l1, l2)) {
+      sol.wrinkle_r = p.r;
+      sol.wrinkle_radius = p.c;
+    }
+    if (record) sol.part_two.push_back({p.r, p.l1, (p.c - q.face) / q.arc});
+  }
+}
+
+// Held on the filleted punch's face only (under a gas pressure, f < P b^2 / 2): the held disc up
+// to its edge `st` (Part I leaving it horizontally), the Coulomb ratio its points need.
+template <class Law>
+void attach_held_fillet_face(const ProfileStickHistory<Law>& history, const Law& law,
+                             const FreeStart& st, bool record, ScaledSolution& sol) {
+  const HeldProfile& q = history.profile();
+  const auto& face = *history.face_map();
+  const double r_edge = st.r0, c_edge = st.state[2] * r_edge;
+  if (record) sol.part_two.clear();
+  track_held_face(face, q, law, c_edge * (1.0 - 1e-12), record, sol);
+  const double i1 = membrane_stress(law, st.state[1], st.state[2]).i1;
+  if (i1 > sol.max_i1) {
+    sol.max_i1 = i1;
+    sol.max_i1_r = r_edge;
+    sol.max_i1_radius = c_edge;
+  }
+  if (record) sol.part_two.push_back({r_edge, st.state[1], (c_edge - q.face) / q.arc});
+  sol.held_traction_ratio = face.held_ratio(c_edge);
+  sol.r_corner = r_edge;
+  sol.tension_ratio = 1.0;
+  sol.part_two_length = 0.0;
+}
+
+// The held profile once Part I is integrated from the edge `st`: the face (uniform at L0, or
+// under a gas pressure the held face's map), the grid points inside the edge, then the edge; the
+// largest I1 and the hoop compression on the profile; the height of the edge above the tip.
 template <class Law>
 void attach_held_profile(const ProfileStickHistory<Law>& history, const Law& law,
                          const FreeStart& st, bool record, ScaledSolution& sol) {
   const HeldProfile& q = history.profile();
   const double r_edge = st.r0, psi_edge = history.psi_at(r_edge).value_or(0.0);
-  if (record) {
-    sol.part_two.clear();
+  if (record) sol.part_two.clear();
+  if (const auto* face = history.face_map()) {
+    track_held_face(*face, q, law, q.face, record, sol);
+  } else if (record) {
     constexpr int kFaceSamples = 4;  // the flat face, uniform at L0: 0 .. R_b
     const double l0 = history.points().front().l1;
     if (history.start() > 0.0)
