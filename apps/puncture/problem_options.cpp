@@ -190,7 +190,7 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "cone (half-angle --cone-half-angle, spherical tip of radius\n"
                      "--tip-radius tangent to it, shank of radius --indenter-radius;\n"
                      "solved until the contact reaches the shank).  All of them held\n"
-                     "(--stick, no gas pressure) or sliding")
+                     "(--stick; not over --gas-volume) or sliding")
           ->group(kGeometry)
           ->check(CLI::IsMember(
               std::vector<std::string>(kIndenterShapes.begin(), kIndenterShapes.end())))
@@ -209,7 +209,7 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "Radius rho of the flat punch's rounded corner (a toroidal fillet\n"
                      "between the flat face, of radius a - rho, and the cylinder) [mm]\n"
                      "(>= 0 and smaller than --indenter-radius; 0: the paper's sharp\n"
-                     "corner; > 0: --stick without a gas pressure)")
+                     "corner)")
           ->group(kGeometry)
           ->capture_default_str();
   app.add_option("--ball-radius",
@@ -427,6 +427,8 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                  "                held point (tangential traction [MPa] <= mu p)\n"
                  "On the curved probes (sphere-tipped, ball, cone, a filleted flat\n"
                  "punch) each material point is held where it touched the probe.\n"
+                 "Under --pressure every probe is held from the inflated dome; over\n"
+                 "a sealed chamber (--gas-volume) only 'none' is solved.\n"
                  "Thresholds must be > 0, e.g. --stick force:0.5")
       ->group(kContact)
       ->capture_default_str();

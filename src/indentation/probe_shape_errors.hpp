@@ -63,16 +63,15 @@ inline void append_probe_shape_errors(std::vector<ValidationError>& errors, cons
   if (const auto* ball = std::get_if<Ball>(&p.indenter))
     append_ball_errors(errors, *ball, p.geometry.clamp_radius_mm);
   if (const auto* cone = std::get_if<Cone>(&p.indenter)) append_cone_errors(errors, *cone);
-  // Held on the ball or the cone (docs/model.md §15.5; the flat punch's own check covers the
-  // fillet): the material touched the flat membrane; under a gas pressure it would touch the
-  // inflated dome, not solved.
+  // Held on the ball or the cone (docs/model.md §15.5, §17.3; the flat punch's own check covers
+  // the fillet): from the flat membrane or the dome inflated at a held pressure; over a sealed
+  // chamber the pressure changes along the history: not solved.
   const bool held_profile =
       std::holds_alternative<Ball>(p.indenter) || std::holds_alternative<Cone>(p.indenter);
-  if (held_profile && p.stick.rule != StickRule::None &&
-      (p.preload.pressure_mpa > 0.0 || p.preload.gas_volume_mm3))
+  if (held_profile && p.stick.rule != StickRule::None && p.preload.gas_volume_mm3)
     errors.push_back({"stick.rule",
-                      fmt::format("under a gas pressure the {} is solved sliding only so far: "
-                                  "stick rule must be 'none', got '{}'",
+                      fmt::format("over a sealed gas chamber the {} is solved sliding only so "
+                                  "far: stick rule must be 'none', got '{}'",
                                   describe(p.indenter),
                                   to_string(p.stick.rule))});
 }

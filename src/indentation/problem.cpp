@@ -317,13 +317,8 @@ void append_fillet_errors(std::vector<ValidationError>& errors, const Problem& p
                      "got {} mm",
                      a,
                      rho)});
-  // (over a sealed chamber the flat punch's own check refuses it, whatever its corner)
-  if (p.stick.rule != StickRule::None && p.preload.pressure_mpa > 0.0 && !p.preload.gas_volume_mm3)
-    errors.push_back({"stick.rule",
-                      fmt::format("the stick stage on the filleted flat punch is solved without a "
-                                  "gas pressure so far: stick rule must be 'none' under a gas "
-                                  "pressure, got '{}'",
-                                  to_string(p.stick.rule))});
+  // (held under a gas pressure: solved, docs/model.md §17.3; over a sealed chamber the flat
+  // punch's own check refuses it, whatever its corner)
 }
 
 // Preload::inflated_state: 1, k >= 1 or the last; another than the first needs a held pressure

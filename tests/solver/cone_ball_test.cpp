@@ -373,8 +373,8 @@ TEST(BallProbe, SmallDeflectionMatchesFopplSphere) {
 
 // Bad dimensions are refused naming the parameter: a ball no wider than its rod or wider than the
 // opening, a cone angle outside (0, 90) degrees, a tip radius <= 0 or a tip sphere wider than the
-// shank, a stick rule under a gas pressure (a gas pressure alone is accepted, and a stick rule
-// without one).
+// shank, a stick rule over a sealed gas chamber (a gas pressure alone is accepted, and a stick
+// rule without one or under a held one).
 TEST(ConeProbe, BadDimensionsNameTheParameter) {
   auto only_error = [](const Problem& p) {
     const auto errors = validation_errors(p);
@@ -393,11 +393,14 @@ TEST(ConeProbe, BadDimensionsNameTheParameter) {
   Problem inflated = with_probe(Cone{2.0, 30.0, 0.5});
   inflated.preload.pressure_mpa = 3e-4;  // solved (pressurised_probes_test.cpp)
   EXPECT_TRUE(validation_errors(inflated).empty());
-  // Held (docs/model.md §15.5): solved; under a gas pressure refused.
+  // Held (docs/model.md §15.5): solved, under a held gas pressure too (§17.3,
+  // pressurised_profile_stick_test.cpp); over a sealed chamber refused.
   Problem held = with_probe(Ball{1.0, 2.0});
   held.stick = {StickRule::Always, 0.0};
   EXPECT_TRUE(validation_errors(held).empty());
   held.preload.pressure_mpa = 3e-4;
+  EXPECT_TRUE(validation_errors(held).empty());
+  held.preload.gas_volume_mm3 = 2e6;
   const auto held_errors = validation_errors(held);
   EXPECT_TRUE(std::any_of(held_errors.begin(), held_errors.end(), [](const auto& e) {
     return e.parameter == "stick.rule";

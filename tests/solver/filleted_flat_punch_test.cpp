@@ -333,8 +333,8 @@ TEST(FilletedFlatPunch, FilletToTheRadiusBecomesTheSphereTippedProbe) {
 }
 
 // Bad input names the parameter: a fillet >= the radius (that is the sphere-tipped probe),
-// negative or not finite; a stick rule under a gas pressure (a gas pressure and a sealed chamber
-// are accepted, and a stick rule without them).
+// negative or not finite; a stick rule over a sealed gas chamber (a gas pressure and a sealed
+// chamber are accepted, and a stick rule without them or under a held pressure).
 // A fillet of 0 is today's sharp punch, accepted with everything.
 TEST(FilletedFlatPunch, BadInputIsRefused) {
   for (const double rho : {2.0, 3.0, -0.1, std::nan("")}) {
@@ -351,9 +351,11 @@ TEST(FilletedFlatPunch, BadInputIsRefused) {
   EXPECT_TRUE(validation_errors(gas).empty());
   gas.preload.gas_volume_mm3 = 1e6;
   EXPECT_TRUE(validation_errors(gas).empty());
-  Problem gas_held = filleted_problem(0.5, 0.18);  // held under a gas pressure: not solved
-  gas_held.preload.pressure_mpa = 1e-4;
+  Problem gas_held = filleted_problem(0.5, 0.18);  // held under a held pressure: solved
+  gas_held.preload.pressure_mpa = 1e-4;            // (pressurised_profile_stick_test.cpp)
   gas_held.stick = {StickRule::Always, 0.0};
+  EXPECT_TRUE(validation_errors(gas_held).empty());
+  gas_held.preload.gas_volume_mm3 = 1e6;  // over a sealed chamber: not solved
   const auto gas_held_errors = validation_errors(gas_held);
   ASSERT_EQ(gas_held_errors.size(), 1u);
   EXPECT_EQ(gas_held_errors.front().parameter, "stick.rule");

@@ -50,11 +50,11 @@ std::optional<HeldEnergy> held_energy_at(const HeldSphereShooting& shooting, dou
   const auto sol = shooting.solve(Stage::Stick, f);
   if (!sol.ok()) return std::nullopt;
   const auto& contact = shooting.contact();
-  const auto& history = contact.stick_history();
+  const auto& history = contact.held_profile_history();
   const auto& law = contact.law();
   const double a = contact.settings().a, r_edge = 1.0 / sol.parameter;
   auto density = [&](double r) {
-    const double l1 = *history.stretch_at(r), l2 = a * std::sin(*history.theta_at(r)) / r;
+    const double l1 = *history.stretch_at(r), l2 = a * std::sin(*history.psi_at(r)) / r;
     return strain_energy_density(law, l1, l2, first_invariant(l1, l2)) * r;
   };
   double energy = 0.0;
@@ -105,7 +105,7 @@ TEST(SphereStick, WorkEqualsStoredEnergy) {
 TEST(SphereStick, TractionDemandMatchesTheVerticalBalance) {
   const Problem p = held_sphere_problem();  // the shooting holds its law
   const auto shooting = make_held_sphere_shooting(p, test::tight_options());
-  const auto& history = shooting.contact().stick_history();
+  const auto& history = shooting.contact().held_profile_history();
   const auto& pts = history.points();
   const double a = shooting.contact().settings().a, h = history.step();
   ASSERT_GT(pts.size(), 100u);
@@ -162,7 +162,7 @@ TEST(SphereStick, HistoryConvergesAtFourthOrder) {
   };
   const double f_switch = 0.01;
   auto measure = [&](int steps) {
-    const SphereStickHistory<Gent> history(part_one, a, steps);
+    const ProfileStickHistory<Gent> history(part_one, HeldProfile{.arc = a}, steps);
     const auto& pts = history.points();
     const auto& q = pts[static_cast<std::size_t>(steps / 4)];
     std::size_t k = 1;
@@ -197,6 +197,47 @@ TEST(SphereStick, HistoryConvergesAtFourthOrder) {
     EXPECT_GT(order(&Measured::depth), 3.5);
     EXPECT_GT(order(&Measured::switch_depth), 3.0);  // with the interpolation's own O(h^4)
   }
+}
+
+// The history's end: the edge marches to the sphere's equator (psi within 1e-6 of pi/2), the
+// grid closed by a last, shorter interval (from 6.2 to 22.0 N: near the equator the force grows
+// steeply with the edge).  States in that interval solve, at a force and at a depth (130 mm, past
+// the last full grid point's 127 mm), with their edge inside it; past its end the held membrane
+// would wrap the cylinder side (StickWrapsSide), a physical status, not a solver failure.
+TEST(SphereStick, HistoryReachesTheEquatorAndItsLastIntervalSolves) {
+  const Problem p = held_sphere_problem();
+  const auto shooting = make_held_sphere_shooting(p, test::tight_options());
+  const auto& history = shooting.contact().held_profile_history();
+  const auto& pts = history.points();
+  const std::size_t n = pts.size();
+  ASSERT_GT(n, 100u);
+  EXPECT_EQ(history.end(), ProfileHistoryEnd::ProfileEnd);
+  EXPECT_LT(0.5 * test::kPi - pts.back().theta, 1e-6);
+  EXPECT_LT(pts[n - 1].r - pts[n - 2].r, history.step());
+  for (const double share : {0.01, 0.5, 0.99}) {
+    const double f = pts[n - 2].f + share * (pts[n - 1].f - pts[n - 2].f);
+    const auto sol = shooting.solve(Stage::Stick, f);
+    ASSERT_TRUE(sol.ok()) << share << ": " << sol.message;
+    EXPECT_EQ(sol.configuration, Configuration::Stick);
+    EXPECT_NEAR(sol.f, f, 1e-12 * f);
+    EXPECT_GT(1.0 / sol.parameter, pts[n - 2].r);
+    EXPECT_LT(1.0 / sol.parameter, pts[n - 1].r);
+    EXPECT_GT(sol.depth, pts[n - 2].depth);
+    EXPECT_LT(sol.depth, pts[n - 1].depth);
+  }
+  const auto beyond = shooting.solve(Stage::Stick, 1.001 * pts.back().f);
+  EXPECT_EQ(beyond.status, Status::StickWrapsSide) << beyond.message;
+  const auto deep = solve_at_depth(p, 130.0, Stage::Stick);
+  ASSERT_TRUE(deep.ok()) << deep.message;
+  EXPECT_EQ(deep.configuration, Configuration::Stick);
+  EXPECT_NEAR(deep.depth_mm, 130.0, 1e-9);
+  std::cout << fmt::format(
+      "held on the sphere: history to psi = pi/2 - {:.2e}, its last interval f {:.4f} .. {:.4f} "
+      "(scaled); at 130 mm {:.6f} N\n",
+      0.5 * test::kPi - pts.back().theta,
+      pts[n - 2].f,
+      pts[n - 1].f,
+      deep.force_n);
 }
 
 // The admissibility of a held state (10 mm deep, paper's membrane): contact pressure >= 0 and

@@ -299,9 +299,9 @@ TEST(SphereTipped, StickOverASealedChamberIsRefused) {
   EXPECT_EQ(held_errors.front().parameter, "stick.rule");
   EXPECT_THROW(solve_at_force(held, 0.1, Stage::Stick), InvalidInput);
   const auto shooting = make_shooting(sphere_problem(), SolverOptions{});
-  // Held, this membrane's edge reaches the equator at 6.2 N, 127 mm (I1 97 there, short of
-  // locking): beyond, it would wrap the cylinder.
-  const auto locked = shooting.solve(Stage::Stick, 10.0);
+  // Held, this membrane's edge reaches the equator at 22.0 N, 203.5 mm (f = 11.67, just short
+  // of locking): beyond, it would wrap the cylinder.
+  const auto locked = shooting.solve(Stage::Stick, 12.0);
   EXPECT_EQ(locked.status, Status::StickWrapsSide) << locked.message;
 
   EXPECT_THROW(fe_solve_at_depth(sphere_problem(), 5.0, FeContact::Held), InvalidInput);

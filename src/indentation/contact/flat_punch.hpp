@@ -1008,40 +1008,11 @@ class FlatPunchContact {
     return plan;
   }
 
-  // Held on the face under pressure (f < P a^2 / 2): t = R s1 of the edge, bracketed around the
-  // held map's t at the disc's edge (the map's grid states meet the clamp there), widened by
-  // doubling until the residual changes sign.
+  // Held on the face under pressure (f < P a^2 / 2): t = R s1 of the edge
+  // (flat_punch_held_face.hpp).
   template <class Residual>
   ShootingPlan held_face_plan(double f, Residual& counted) const {
-    ShootingPlan plan;
-    plan.configuration = Configuration::Stick;
-    const auto guess = held_face_->tension_near(std::sqrt(2.0 * f / pressure_));
-    if (!guess) {
-      plan.status = Status::BeyondLocking;
-      plan.message =
-          "the membrane held on the face locks before the contact disc carries this "
-          "force";
-      return plan;
-    }
-    for (double d = 1e-3; d < 1.0; d *= 2.0) {
-      const double lo = *guess * (1.0 - d), hi = *guess * (1.0 + d);
-      const auto g_lo = counted(Configuration::Stick, lo);
-      if (!g_lo || !(*g_lo < 0.0)) continue;
-      const auto g_hi = counted(Configuration::Stick, hi);
-      if (!g_hi || !(*g_hi >= 0.0)) continue;
-      plan.lo = lo;
-      plan.g_lo = *g_lo;
-      plan.cap = hi;
-      plan.g_cap = *g_hi;
-      plan.no_root_message =
-          "stick shooting on the held face found no edge tension meeting the clamp condition";
-      return plan;
-    }
-    plan.status = Status::NoConvergence;
-    plan.message =
-        "stick shooting on the held face: no bracket of the edge tension around the "
-        "held map's";
-    return plan;
+    return held_face_tension_plan(*held_face_, f, pressure_, counted);
   }
 
   // Sliding: whether Part II exists decides the configuration and its parameter's bracket.

@@ -8,15 +8,16 @@
 // lambda1_edge the meridional stretch with which Part I, leaving the face horizontally at R_c
 // (lambda2 = c / R_c, t = R_c s1, force P c^2 / 2), meets the clamp.  Classical Runge-Kutta on a
 // uniform grid in c up to the face's edge a, sub-stepped near the first touch where the march is
-// stiff (as the sphere's history, sphere_stick.hpp).  A held point keeps its stretches, hence
-// the tangential traction it needs: tau c lambda1 = d(R s1)/dR - s2 (the ring's radial balance on
-// the flat face, whose normal load is the gas pressure P alone).
+// stiff (as the curved probes' history, profile_stick.hpp).  A held point keeps its stretches,
+// hence the tangential traction it needs: tau c lambda1 = d(R s1)/dR - s2 (the ring's radial
+// balance on the flat face, whose normal load is the gas pressure P alone).
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
 
-#include "indentation/contact/sphere_stick.hpp"
+#include "indentation/contact/contact_model.hpp"
+#include "indentation/contact/stuck_traction.hpp"
 #include "indentation/free_part.hpp"
 #include "numerics/root_from_guess.hpp"
 #include "puncture/membrane_stress.hpp"
@@ -197,5 +198,42 @@ class HeldFaceHistory {
   mutable std::vector<HeldFacePoint> points_;
   mutable double guess_ = 1.0;  // the last edge stretch solved: the next solve's start
 };
+
+// Held on the face under pressure (f < P a^2 / 2): t = R s1 of the edge, bracketed around the
+// held map's t at the disc's edge (the map's grid states meet the clamp there), widened by
+// doubling until the residual changes sign.
+template <class Law, class Residual>
+ShootingPlan held_face_tension_plan(const HeldFaceHistory<Law>& map, double f, double pressure,
+                                    Residual& counted) {
+  ShootingPlan plan;
+  plan.configuration = Configuration::Stick;
+  const auto guess = map.tension_near(std::sqrt(2.0 * f / pressure));
+  if (!guess) {
+    plan.status = Status::BeyondLocking;
+    plan.message =
+        "the membrane held on the face locks before the contact disc carries this "
+        "force";
+    return plan;
+  }
+  for (double d = 1e-3; d < 1.0; d *= 2.0) {
+    const double lo = *guess * (1.0 - d), hi = *guess * (1.0 + d);
+    const auto g_lo = counted(Configuration::Stick, lo);
+    if (!g_lo || !(*g_lo < 0.0)) continue;
+    const auto g_hi = counted(Configuration::Stick, hi);
+    if (!g_hi || !(*g_hi >= 0.0)) continue;
+    plan.lo = lo;
+    plan.g_lo = *g_lo;
+    plan.cap = hi;
+    plan.g_cap = *g_hi;
+    plan.no_root_message =
+        "stick shooting on the held face found no edge tension meeting the clamp condition";
+    return plan;
+  }
+  plan.status = Status::NoConvergence;
+  plan.message =
+      "stick shooting on the held face: no bracket of the edge tension around the "
+      "held map's";
+  return plan;
+}
 
 }  // namespace puncture::detail

@@ -1,17 +1,30 @@
 #pragma once
-// The stick stage on the curved probes other than the sphere-tipped one (docs/model.md §15.5):
-// the filleted flat punch (a flat face, then a toroidal arc), the ball (its lower hemisphere) and
-// the cone (a tip sphere, then the straight cone up to the kink onto the shank).  Each is a
-// profile parametrised by psi = (length along it from the face's edge or the pole) / rho, rho the
-// arc's (tip sphere's) radius; a material point R held at psi(R) has
+// The stick stage on the curved probes (docs/model.md §15.4, §15.5): the sphere-tipped probe (a
+// hemisphere, then the cylinder), the filleted flat punch (a flat face, then a toroidal arc), the
+// ball (its lower hemisphere) and the cone (a tip sphere, then the straight cone up to the kink
+// onto the shank).  Each is a profile parametrised by psi = (length along it from the face's edge
+// or the pole) / rho, rho the arc's (tip sphere's) radius; a material point R held at psi(R) has
 //   lambda1 = rho dpsi/dR,  lambda2 = r(psi) / R,  slope phi(psi),
-// and the contact map is built along the loading as on the sphere (sphere_stick.hpp): the point
-// R_c joins at the edge with Part I's meridional stretch there,
-//   dpsi_c/dR_c = lambda1_edge(R_c, psi_c) / rho.
+// and the contact map is built along the loading history, parametrised by the contact edge's
+// reference radius R_c: the point R_c joins at the edge with the free membrane's meridional
+// stretch there,
+//   dpsi_c/dR_c = lambda1_edge(R_c, psi_c) / rho,
+// lambda1_edge the stretch with which Part I, leaving the profile tangentially at (R_c, psi_c)
+// with lambda2 = r(psi_c) / R_c, meets the clamp.  Classical Runge-Kutta (fourth order) on a
+// uniform grid in R_c; each stage solves the edge's lambda1 (TOMS 748 on Part I's clamp
+// residual); near the first touch, where the march is stiff, in sub-steps of a quarter of R.
+// Stuck points keep their stretches, so their tractions are frozen too: the traction demand of a
+// point is the one it had when it joined.
 // The flat face touches the flat membrane at once and holds it at the pre-stretch L0 (the sharp
 // punch's held Part III, §9); the map starts at the face's edge R_b = b / L0 with psi = 0.  The
 // march stops where the tip sphere meets the cone (its meridional curvature jumps there) and
 // restarts on the cone, so that no Runge-Kutta step spans the jump.
+// Under a held gas pressure P (§17.3) the probe first touches the inflated dome's pole, which
+// holds the dome's pole stretch; the gas presses the held membrane onto the probe (its contact
+// pressure gains P) and carries P r^2 / 2 of the force inside the edge's current radius r.  The
+// filleted punch's face then holds a disc that grows with the force (flat_punch_held_face.hpp,
+// the sharp punch's held face) until it reaches the face's edge; the arc's map starts there,
+// from the face's material and stretch at its edge.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,7 +32,8 @@
 #include <vector>
 
 #include "indentation/contact/contact_model.hpp"
-#include "indentation/contact/sphere_stick.hpp"
+#include "indentation/contact/flat_punch_held_face.hpp"
+#include "indentation/contact/stuck_traction.hpp"
 #include "indentation/free_part.hpp"
 #include "mechanics/inverse_stretch.hpp"
 #include "numerics/root_from_guess.hpp"
@@ -77,7 +91,10 @@ class ProfileStickHistory {
 
   ProfileStickHistory(const FreePart<Law>& part_one, const HeldProfile& profile,
                       int steps = kDefaultSteps)
-      : part_one_(part_one), q_(profile), steps_(steps) {}
+      : part_one_(part_one), q_(profile), steps_(steps) {
+    if (q_.face > 0.0 && part_one.pressure() > 0.0)
+      face_.emplace(part_one, q_.face, first_touch_stretch());
+  }
 
   const HeldProfile& profile() const { return q_; }
   const std::vector<StuckPoint>& points() const {
@@ -88,8 +105,25 @@ class ProfileStickHistory {
     if (!built_) build();
     return end_;
   }
-  // The face's edge, where the map starts (0 without a face).
-  double start() const { return q_.face / part_one_.prestretch(); }
+  // The held face under a gas pressure (none without a face or a pressure).
+  const HeldFaceHistory<Law>* face_map() const { return face_ ? &*face_ : nullptr; }
+  // The face's edge, where the map starts (0 without a face; under a gas pressure the material
+  // the held face's disc reached it with, infinite if it locked before).
+  double start() const {
+    if (!face_) return q_.face / part_one_.prestretch();
+    return face_->complete() ? face_->points().back().r : std::numeric_limits<double>::infinity();
+  }
+  // The stretch of the first material touched: the inflated dome's pole's under a gas pressure
+  // (docs/model.md §17.3), else the pre-stretch L0.
+  double first_touch_stretch() const {
+    const double pole = part_one_.settings().dome_pole_stretch;
+    return pole > 0.0 ? pole : part_one_.prestretch();
+  }
+  // The gas pressure's resultant on the held membrane inside psi, P r(psi)^2 / 2 (0 without).
+  double gas_load(double psi, bool cone) const {
+    const double radius = q_.radius(psi, cone);
+    return 0.5 * part_one_.pressure() * radius * radius;
+  }
   double step() const { return q_.arc * q_.end_psi / part_one_.prestretch() / steps_; }
 
   // psi at reference radius r in [start, last grid point]: the cubic Hermite interpolant of
@@ -118,14 +152,18 @@ class ProfileStickHistory {
   }
 
   // Part I leaving the profile tangentially at the edge R_c at force f (t = R s1 cos(phi), R s1
-  // sin(phi) = f); empty beyond the history or outside the material's domain.
+  // sin(phi) = f less the gas's resultant inside the edge); empty beyond the history or outside
+  // the material's domain.
   std::optional<FreeStart> edge_start(double r, double f) const {
     const auto psi = psi_at(r);
     if (!psi || !(*psi > 0.0) || !(f > 0.0)) return std::nullopt;
-    const double phi = q_.slope(*psi), l2 = q_.radius(*psi) / r;
-    const auto l1 = invert_radial_stress(part_one_.law(), f / (r * std::sin(phi)), l2);
+    const bool cone = q_.on_cone(*psi);
+    const double pull = f - gas_load(*psi, cone);
+    if (!(pull > 0.0)) return std::nullopt;
+    const double phi = q_.slope(*psi, cone), l2 = q_.radius(*psi, cone) / r;
+    const auto l1 = invert_radial_stress(part_one_.law(), pull / (r * std::sin(phi)), l2);
     if (!l1) return std::nullopt;
-    return FreeStart{{f / std::tan(phi), *l1, l2, 0.0}, r, phi, 1.0};
+    return FreeStart{{pull / std::tan(phi), *l1, l2, 0.0}, r, phi, 1.0};
   }
 
   // The tractions at grid point k (lambda1' by central differences of fourth order, one-sided
@@ -156,14 +194,16 @@ class ProfileStickHistory {
     return traction_at(p[k].r, p[k].theta, p[k].l1, dl1);
   }
 
-  // Normal balance p = s1 kappa1 / lambda2 + s2 sin(phi) / (lambda1 r); tangential (towards the
-  // tip) tau r lambda1 = d(R s1)/dR - s2 cos(phi), d(R s1)/dR = s1 + R (ds1/dl1 lambda1' +
-  // ds1/dl2 lambda2'), lambda2' = (lambda1 cos(phi) - lambda2) / R.  At the pole both limits.
+  // Normal balance p = s1 kappa1 / lambda2 + s2 sin(phi) / (lambda1 r) + P (the gas presses the
+  // membrane onto the probe); tangential (towards the tip) tau r lambda1 = d(R s1)/dR - s2
+  // cos(phi), d(R s1)/dR = s1 + R (ds1/dl1 lambda1' + ds1/dl2 lambda2'), lambda2' = (lambda1
+  // cos(phi) - lambda2) / R.  At the pole both limits.
   StuckTraction traction_at(double r, double psi, double l1, double dl1) const {
     const auto& law = part_one_.law();
+    const double gas = part_one_.pressure();
     if (r == 0.0) {
       const auto st = membrane_stress(law, l1, l1);
-      return {(st.s1 + st.s2) / (l1 * q_.arc), 0.0};
+      return {(st.s1 + st.s2) / (l1 * q_.arc) + gas, 0.0};
     }
     const bool cone = q_.on_cone(psi);
     const double radius = q_.radius(psi, cone), phi = q_.slope(psi, cone);
@@ -171,7 +211,7 @@ class ProfileStickHistory {
     const auto st = membrane_stress(law, l1, l2);
     const double dl2 = (l1 * std::cos(phi) - l2) / r;
     const double d_rs1 = st.s1 + r * (st.ds1_dl1 * dl1 + st.ds1_dl2 * dl2);
-    return {st.s1 * q_.curvature(cone) / l2 + st.s2 * std::sin(phi) / (l1 * radius),
+    return {st.s1 * q_.curvature(cone) / l2 + st.s2 * std::sin(phi) / (l1 * radius) + gas,
             (d_rs1 - st.s2 * std::cos(phi)) / (radius * l1)};
   }
 
@@ -187,23 +227,26 @@ class ProfileStickHistory {
             lo.tangential + s * (hi.tangential - lo.tangential)};
   }
 
-  // The largest |tau| / p of the held points inside r: each keeps the tractions it joined with.
+  // The largest |tau| / p of the held points inside r: each keeps the tractions it joined with
+  // (under a gas pressure the held face's first; inside it, HeldFaceHistory::held_ratio).
   double held_ratio(double r) const {
     const auto& p = points();
-    if (p.size() < 3 || r < start()) return 0.0;
+    const double face = face_ ? face_->held_ratio(q_.face) : 0.0;
+    if (p.size() < 3 || r < start()) return face;
     if (ratio_max_.size() != p.size()) {
       ratio_max_.assign(p.size(), 0.0);
       for (std::size_t k = 1; k < p.size(); ++k)
-        ratio_max_[k] = std::max(ratio_max_[k - 1], SphereStickHistory<Law>::ratio(traction(k)));
+        ratio_max_[k] = std::max(ratio_max_[k - 1], held_traction_ratio_of(traction(k)));
     }
     const double x = (r - start()) / step();
     const std::size_t below =
         std::min(p.size() - 1, static_cast<std::size_t>(std::ceil(x)) - (x > 0.0 ? 1 : 0));
-    return std::max(ratio_max_[below], SphereStickHistory<Law>::ratio(traction_near(r)));
+    return std::max({face, ratio_max_[below], held_traction_ratio_of(traction_near(r))});
   }
 
-  // lambda1 of the edge's Part I at (r, psi) (the profile's formulas by `cone`), the force and
-  // Part I's height; empty when no stretch meets the clamp.
+  // lambda1 of the edge's Part I at (r, psi) (the profile's formulas by `cone`), the force (the
+  // membrane's pull and the gas's resultant inside the edge) and Part I's height; empty when no
+  // stretch meets the clamp.
   struct EdgeSolve {
     double l1, f, height;
   };
@@ -215,7 +258,10 @@ class ProfileStickHistory {
       const double s1 = membrane_stress(law, l1, l2).s1;
       return FreeStart{{r * s1 * std::cos(phi), l1, l2, 0.0}, r, phi, 1.0};
     };
-    auto force = [&](double l1) { return r * membrane_stress(law, l1, l2).s1 * std::sin(phi); };
+    const double gas = gas_load(psi, cone);
+    auto force = [&](double l1) {
+      return r * membrane_stress(law, l1, l2).s1 * std::sin(phi) + gas;
+    };
     auto g = [&](double l1) -> std::optional<double> {
       if (!(l1 > floor)) return std::nullopt;
       const auto st = membrane_stress(law, l1, l2);
@@ -245,11 +291,24 @@ class ProfileStickHistory {
   void build() const {
     built_ = true;
     end_ = ProfileHistoryEnd::GridEnd;
-    const double h = step(), l0 = part_one_.prestretch(), r0 = start();
-    points_.assign(1, StuckPoint{r0, 0.0, l0, 0.0, 0.0});
+    const double h = step(), r0 = start();
+    double l0 = first_touch_stretch(), f0 = 0.0, depth0 = 0.0;
+    if (face_) {
+      // From the held face's edge: its material, stretch and force P b^2 / 2.
+      if (!face_->complete()) {
+        end_ = ProfileHistoryEnd::Locking;
+        points_.clear();
+        return;
+      }
+      l0 = face_->points().back().l1;
+      f0 = gas_load(0.0, false);
+      if (const auto e = solve_edge(r0, 0.0, false, l0)) depth0 = e->height;
+    }
+    points_.assign(1, StuckPoint{r0, 0.0, l0, f0, depth0});
     guess_ = l0;
-    // The first material the arc holds is the flat membrane's at L0: the march starts a little
-    // past the face's edge (or the pole) from psi = L0 (R - R_b) / rho, strains ~1e-6 there, in
+    // The first material the arc holds is the flat membrane's at L0 (the dome's pole's under a
+    // gas pressure): the march starts a little past the face's edge (or the pole) from psi = L0
+    // (R - R_b) / rho, strains ~1e-6 there, in
     // sub-steps of a quarter of R where those are shorter than the grid's (near the pole the
     // march is stiff, ~ -3 / R, as on the sphere).
     const double dr0 = std::min(kFirstTouch * q_.arc, 0.25 * h);
@@ -357,9 +416,10 @@ class ProfileStickHistory {
   mutable bool built_ = false;
   mutable bool past_end_ = false;  // a Runge-Kutta stage passed the profile's end
   mutable ProfileHistoryEnd end_ = ProfileHistoryEnd::GridEnd;
-  mutable std::vector<StuckPoint> points_;  // theta holds psi
-  mutable std::vector<double> ratio_max_;   // running largest |tau| / p over the grid
-  mutable double guess_ = 1.0;              // the last edge stretch solved: the next's start
+  mutable std::vector<StuckPoint> points_;    // theta holds psi
+  mutable std::vector<double> ratio_max_;     // running largest |tau| / p over the grid
+  mutable double guess_ = 1.0;                // the last edge stretch solved: the next's start
+  std::optional<HeldFaceHistory<Law>> face_;  // the held face under a gas pressure
 };
 
 // Why the held states end at the history's last point: the profile's end (a status naming what
@@ -373,9 +433,13 @@ ShootingPlan held_profile_end_plan(const ProfileStickHistory<Law>& history) {
       switch (history.profile().end) {
         case HeldProfileEnd::CylinderSide:
           plan.status = Status::StickWrapsSide;
-          plan.message =
-              "at this force the membrane held where it touched the fillet reaches its "
-              "equator: it would wrap the punch's cylinder side, outside the stick model";
+          plan.message = history.profile().face > 0.0
+                             ? "at this force the membrane held where it touched the fillet "
+                               "reaches its equator: it would wrap the punch's cylinder side, "
+                               "outside the stick model"
+                             : "at this force the membrane held where it touched the sphere "
+                               "reaches the sphere's equator: it would wrap the cylinder side, "
+                               "outside the stick model";
           break;
         case HeldProfileEnd::Neck:
           plan.status = Status::OutsideModel;
@@ -414,6 +478,8 @@ ShootingPlan held_profile_plan(const ProfileStickHistory<Law>& history, double f
   ShootingPlan plan;
   plan.configuration = Configuration::Stick;
   const auto& p = history.points();
+  if (p.size() < 4 && history.end() == ProfileHistoryEnd::Locking)
+    return held_profile_end_plan(history);
   if (p.size() < 4) {
     plan.status = Status::NoConvergence;
     plan.message = "the stick history on the probe could not be started from the first touch";
@@ -445,16 +511,64 @@ ShootingPlan held_profile_plan(const ProfileStickHistory<Law>& history, double f
   return plan;
 }
 
-// The held profile once Part I is integrated from the edge `st`: the face (uniform at L0, its
-// samples), the grid points inside the edge, then the edge; the largest I1 and the hoop
-// compression on the profile; the height of the edge above the tip.
+// The held face's grid points under a gas pressure with current radius c < c_end: their largest
+// I1 and hoop compression and, with `record`, their samples (R, lambda1, psi = (c - b) / rho < 0,
+// so that the fields know each point's current radius).
+template <class Law>
+void track_held_face(const HeldFaceHistory<Law>& face, const HeldProfile& q, const Law& law,
+                     double c_end, bool record, ScaledSolution& sol) {
+  for (const HeldFacePoint& p : face.points()) {
+    if (!(p.c < c_end)) break;
+    const double l2 = p.r > 0.0 ? p.c / p.r : p.l1;
+    const double i1 = membrane_stress(law, p.l1, l2).i1;
+    if (i1 > sol.max_i1) {
+      sol.max_i1 = i1;
+      sol.max_i1_r = p.r;
+      sol.max_i1_radius = p.c;
+    }
+    if (sol.wrinkle_r < 0.0 && p.r > 0.0 && hoop_compressive(p.l1, l2)) {
+      sol.wrinkle_r = p.r;
+      sol.wrinkle_radius = p.c;
+    }
+    if (record) sol.part_two.push_back({p.r, p.l1, (p.c - q.face) / q.arc});
+  }
+}
+
+// Held on the filleted punch's face only (under a gas pressure, f < P b^2 / 2): the held disc up
+// to its edge `st` (Part I leaving it horizontally), the Coulomb ratio its points need.
+template <class Law>
+void attach_held_fillet_face(const ProfileStickHistory<Law>& history, const Law& law,
+                             const FreeStart& st, bool record, ScaledSolution& sol) {
+  const HeldProfile& q = history.profile();
+  const auto& face = *history.face_map();
+  const double r_edge = st.r0, c_edge = st.state[2] * r_edge;
+  if (record) sol.part_two.clear();
+  track_held_face(face, q, law, c_edge * (1.0 - 1e-12), record, sol);
+  const double i1 = membrane_stress(law, st.state[1], st.state[2]).i1;
+  if (i1 > sol.max_i1) {
+    sol.max_i1 = i1;
+    sol.max_i1_r = r_edge;
+    sol.max_i1_radius = c_edge;
+  }
+  if (record) sol.part_two.push_back({r_edge, st.state[1], (c_edge - q.face) / q.arc});
+  sol.held_traction_ratio = face.held_ratio(c_edge);
+  sol.r_corner = r_edge;
+  sol.tension_ratio = 1.0;
+  sol.part_two_length = 0.0;
+}
+
+// The held profile once Part I is integrated from the edge `st`: the face (uniform at L0, or
+// under a gas pressure the held face's map), the grid points inside the edge, then the edge; the
+// largest I1 and the hoop compression on the profile; the height of the edge above the tip.
 template <class Law>
 void attach_held_profile(const ProfileStickHistory<Law>& history, const Law& law,
                          const FreeStart& st, bool record, ScaledSolution& sol) {
   const HeldProfile& q = history.profile();
   const double r_edge = st.r0, psi_edge = history.psi_at(r_edge).value_or(0.0);
-  if (record) {
-    sol.part_two.clear();
+  if (record) sol.part_two.clear();
+  if (const auto* face = history.face_map()) {
+    track_held_face(*face, q, law, q.face, record, sol);
+  } else if (record) {
     constexpr int kFaceSamples = 4;  // the flat face, uniform at L0: 0 .. R_b
     const double l0 = history.points().front().l1;
     if (history.start() > 0.0)

@@ -16,8 +16,9 @@
 //                       alone, the cap carries f at the equator.  With friction p = the pole
 //                       stretch, the side marched up from the equator (rough_side).
 //   Stick               p = 1 / R_c, R_c the contact edge: each material point held where it
-//                       touched (contact/sphere_stick.hpp; on the fillet, the ball and the cone
-//                       contact/profile_stick.hpp); not under a gas pressure.
+//                       touched (contact/profile_stick.hpp, every profile, under a held gas
+//                       pressure too); on the fillet's face under a gas pressure p = t, the
+//                       horizontal line tension where Part I leaves the held disc.
 // Coulomb slip on the hemisphere and on the cylinder side (the membrane slides away from the
 // pole; friction mu p points to it).
 //
@@ -42,7 +43,6 @@
 #include "indentation/contact/fillet_face_under_gas.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
 #include "indentation/contact/profile_stick.hpp"
-#include "indentation/contact/sphere_stick.hpp"
 #include "indentation/free_part.hpp"
 #include "indentation/membrane_fields.hpp"
 #include "mechanics/inverse_stretch.hpp"
@@ -195,16 +195,17 @@ class SphereTippedContact {
         end_psi_(cone() ? tangency_ + (settings.shank - settings.a * std::sin(tangency_)) /
                                           (settings.a * std::cos(tangency_))
                         : kHalfPiCap),
-        stick_(std::make_shared<SphereStickHistory<Law>>(part_one, settings.a)),
         held_profile_(std::make_shared<ProfileStickHistory<Law>>(part_one, held_profile())) {}
 
-  // The stick stage's history (built on first use; shared by copies of the contact).
-  const SphereStickHistory<Law>& stick_history() const { return *stick_; }
-  // ... on the filleted punch, the ball and the cone (contact/profile_stick.hpp).
+  // The stick stage's history (contact/profile_stick.hpp; built on first use, shared by copies
+  // of the contact).
   const ProfileStickHistory<Law>& held_profile_history() const { return *held_profile_; }
 
-  // The pole stretch exceeds 1.
-  double parameter_floor(Configuration) const { return 1.0; }
+  // The pole stretch exceeds 1 (and 1 / R_c held); held on the fillet's face under a gas
+  // pressure the parameter is a line tension t > 0, as on the sharp punch's held face.
+  double parameter_floor(Configuration c) const {
+    return c == Configuration::Stick && held_profile_->face_map() ? 0.0 : 1.0;
+  }
   // Near zero load the pole strain p - 1 (2.7e-4 at the first point of the 2 mm probe's
   // 200-point curve) is held in stretches near 1: the cap's edge, and with it the depth, carry
   // ~1e-8 of rounding noise there (bench/README.md), and the curve's points may end on it.
@@ -458,9 +459,7 @@ class SphereTippedContact {
       return side_top_start(f, p);
     }
     if (c == Configuration::Stick)
-      return stick_solved()          ? stick_->edge_start(1.0 / p, f)
-             : held_profile_solved() ? held_profile_->edge_start(1.0 / p, f)
-                                     : std::nullopt;
+      return held_on_face(f) ? held_face_start(f, p) : held_profile_->edge_start(1.0 / p, f);
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
     if (fillet_face().on_face(f)) return fillet_face().start(f, p);
     const auto& cap = cap_to_edge(p, f);
@@ -486,13 +485,12 @@ class SphereTippedContact {
       return rough_side_solved() ? attach_rough_side(p, record, sol, maxima)
                                  : attach_with_side(st, record, sol, maxima);
     if (c == Configuration::Stick) {
-      if (held_profile_solved())
-        attach_held_profile(*held_profile_, law_, st, record, sol);
+      if (held_on_face(sol.f))
+        attach_held_fillet_face(*held_profile_, law_, st, record, sol);
       else
-        attach_stuck_cap(*stick_, law_, s_.a, st, record, sol);
+        attach_held_profile(*held_profile_, law_, st, record, sol);
       // The pole holds as it touched (the dome's pole stretch under a gas pressure).
-      sol.part_three_stretch =
-          held_profile_solved() ? part_one_.prestretch() : stick_->first_touch_stretch();
+      sol.part_three_stretch = held_profile_->first_touch_stretch();
       return true;
     }
     if (fillet_face().on_face(sol.f))  // under a gas pressure, the fillet's face alone
@@ -543,15 +541,9 @@ class SphereTippedContact {
   ShootingPlan plan(Stage stage, double f, Residual&& counted) const {
     ShootingPlan plan;
     plan.configuration = Configuration::SlipWithoutPartTwo;
-    if (stage == Stage::Stick && stick_solved()) return stuck_plan(*stick_, f, counted);
-    if (stage == Stage::Stick && held_profile_solved())
-      return held_profile_plan(*held_profile_, f, counted);
-    if (stage == Stage::Stick) {
-      plan.configuration = Configuration::Stick;
-      plan.status = Status::OutsideModel;
-      plan.message = s_.face > 0.0 ? kFilletStickNotImplemented : kStickNotImplemented;
-      return plan;
-    }
+    if (stage == Stage::Stick && held_on_face(f))
+      return held_face_tension_plan(*held_profile_->face_map(), f, pressure_, counted);
+    if (stage == Stage::Stick) return held_profile_plan(*held_profile_, f, counted);
     if (fillet_face().on_face(f))  // under a gas pressure, the fillet's face alone
       return bracket_from_below(counted,
                                 Configuration::SlipWithoutPartTwo,
@@ -853,7 +845,8 @@ class SphereTippedContact {
       const bool side = !cone() && psi > kHalfPiCap;
       // (Under a gas pressure with friction the face is not uniform: psi = (r - b) / rho < 0.)
       const bool rough_face = psi < 0.0;
-      const bool face = rough_face || (s_.face > 0.0 && psi == 0.0 && r_ref < s_.face / l1);
+      const bool face = rough_face || (s_.face > 0.0 && psi == 0.0 && r_ref < s_.face / l1 &&
+                                       !(stuck && held_profile_->face_map()));
       const double radius = side         ? s_.a
                             : rough_face ? s_.face + arc() * psi
                             : face       ? l1 * r_ref
@@ -867,21 +860,23 @@ class SphereTippedContact {
                                 ? st.s2 * std::sin(tangency_) / (l1 * radius) + pressure_
                                 : contact_pressure(l1, l2, st, side, psi);
       const double pressure = normal * g * u.thickness_mm / big_a;
-      append_point(m,
-                   side ? MembranePart::Side : MembranePart::Tip,
-                   r_ref * big_a,
-                   radius * big_a,
-                   face ? depth : depth - profile_height(psi) * big_a,
-                   face     ? 0.0
-                   : cone() ? slope_at(psi)
-                            : std::min(psi, kHalfPiCap),
-                   l1,
-                   l2,
-                   st,
-                   g,
-                   pressure,
-                   // Held: the tangential traction the probe supplies (towards the pole).
-                   stuck ? held_tangential(r_ref) * g * u.thickness_mm / big_a : s_.mu * pressure);
+      append_point(
+          m,
+          side ? MembranePart::Side : MembranePart::Tip,
+          r_ref * big_a,
+          radius * big_a,
+          face ? depth : depth - profile_height(psi) * big_a,
+          face     ? 0.0
+          : cone() ? slope_at(psi)
+                   : std::min(psi, kHalfPiCap),
+          l1,
+          l2,
+          st,
+          g,
+          pressure,
+          // Held: the tangential traction the probe supplies (towards the pole).
+          stuck ? held_tangential(r_ref, rough_face ? radius : -1.0) * g * u.thickness_mm / big_a
+                : s_.mu * pressure);
     }
   }
 
@@ -1145,12 +1140,6 @@ class SphereTippedContact {
 
   const SphereTippedSettings& settings() const { return s_; }
 
-  static constexpr const char* kFilletStickNotImplemented =
-      "the stick stage on the filleted flat punch is not implemented yet: only sliding (stick "
-      "rule none) is solved";
-  static constexpr const char* kStickNotImplemented =
-      "the stick stage on the sphere-tipped probe is not implemented yet: only sliding (stick "
-      "rule none) is solved";
   static constexpr const char* kNeckNotSolved =
       "outside the ball model: the contact passes the ball's equator; the membrane would wrap the "
       "upper hemisphere and form a neck above the ball, which is not solved (docs/model.md, "
@@ -1177,11 +1166,23 @@ class SphereTippedContact {
   }
   // Samples of the face under a gas pressure: as many as of the arc.
   int face_points() const { return std::max(1, part_one_.settings().field_points); }
-  // The stick stage is solved on the sphere-tipped probe (under a held gas pressure too, from
-  // the inflated pole: docs/model.md §17.3).
-  bool stick_solved() const { return s_.face == 0.0 && s_.beyond == BeyondTipSphere::CylinderSide; }
-  // ... and on the fillet, the ball and the cone by their profile (contact/profile_stick.hpp).
-  bool held_profile_solved() const { return !stick_solved() && pressure_ == 0.0; }
+  // Held on the fillet's face alone under a gas pressure (f < P b^2 / 2, the held face's map).
+  bool held_on_face(double f) const {
+    return held_profile_->face_map() && f < 0.5 * pressure_ * s_.face * s_.face;
+  }
+  // Held there, Part I leaves the face horizontally at the held disc's edge c = sqrt(2 f / P), R
+  // from the face's map, with the radial line tension t = R s1 (the parameter, as on the sharp
+  // punch's held face).
+  std::optional<FreeStart> held_face_start(double f, double t) const {
+    if (!(t > 0.0) || !std::isfinite(t)) return std::nullopt;
+    const double c = std::sqrt(2.0 * f / pressure_);
+    const auto r = held_profile_->face_map()->radius_at(c);
+    if (!r || !(*r > 0.0)) return std::nullopt;
+    const double l2 = c / *r;
+    const auto l1 = invert_radial_stress(law_, t / *r, l2);
+    if (!l1 || !(first_invariant(*l1, l2) < locking_i1_)) return std::nullopt;
+    return FreeStart{{t, *l1, l2, 0.0}, *r, 0.0, 1.0};
+  }
   HeldProfile held_profile() const {
     return {.arc = arc(),
             .face = s_.face,
@@ -1191,10 +1192,12 @@ class SphereTippedContact {
                    : s_.beyond == BeyondTipSphere::Neck ? HeldProfileEnd::Neck
                                                         : HeldProfileEnd::CylinderSide};
   }
-  // The held membrane's tangential traction towards the tip at r (/ (G H / A)).
-  double held_tangential(double r) const {
-    return (held_profile_solved() ? held_profile_->traction_near(r) : stick_->traction_near(r))
-        .tangential;
+  // The held membrane's tangential traction towards the tip at r (/ (G H / A)); on the held face
+  // under a gas pressure (face_radius >= 0, its current radius) the face map's.
+  double held_tangential(double r, double face_radius) const {
+    const auto* face = held_profile_->face_map();
+    return face && face_radius >= 0.0 ? face->tangential_near(face_radius)
+                                      : held_profile_->traction_near(r).tangential;
   }
 
   // The cap's system, with the cone past the tangency for the cone probe (by position, or the
@@ -1556,8 +1559,7 @@ class SphereTippedContact {
   double tangency_;     // polar angle where the tip sphere ends: pi/2, or the cone's tangency
   double side_radius_;  // radius where the curved profile ends: the cylinder's a, the shank's
   double end_psi_;      // the profile coordinate there (pi/2: the equator; the cone's kink)
-  std::shared_ptr<SphereStickHistory<Law>> stick_;          // the stick stage's contact map
-  std::shared_ptr<ProfileStickHistory<Law>> held_profile_;  // ... on the other curved probes
+  std::shared_ptr<ProfileStickHistory<Law>> held_profile_;  // the stick stage's contact map
   // The last three equator onsets found (the last first) and the forces they carry: the answers
   // when those forces are asked again, and the start of the next (one solve runs single-threaded
   // on its own contact model, whose settings never change).
