@@ -683,28 +683,37 @@ class SphereTippedContact {
       const auto& cap = cap_to_edge(l, f);
       return cap && !cap->end.at_equator;
     };
+    // The search stops at the first carried stretch whose residual is negative (not at the
+    // carrying boundary to 1e-15), and the lowest stretch tried with g >= 0 caps the bracket: the
+    // root's bracket starts ~1e-4 wide instead of ~5, half the marches at the curve's first points
+    // (bench/README.md); the root is the same one, to the shooting's tolerance.
+    std::optional<std::pair<double, double>> above;  // the lowest stretch tried with g >= 0
     if (carried(hi * (1.0 - 1e-12))) {
       double lo = 1.0;
       bool bracketed = false;
+      const auto tried = [&](double l) {
+        hi = l;
+        g_hi = counted(Configuration::SlipWithoutPartTwo, l).value_or(kBeyondDomain);
+        if (g_hi >= 0.0 && g_hi < kBeyondDomain) above = {l, g_hi};
+        return g_hi < 0.0;
+      };
       for (int k = 1; k <= 60; ++k) {
         const double l = 1.0 + (top - 1.0) / std::ldexp(1.0, k);
         if (!carried(l)) {
           lo = l;
           break;
         }
-        hi = l;
-        g_hi = counted(Configuration::SlipWithoutPartTwo, l).value_or(kBeyondDomain);
-        if (g_hi < 0.0) {
+        if (tried(l)) {
           bracketed = true;
           break;
         }
       }
-      if (!bracketed) {
-        for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
-          const double mid = 0.5 * (lo + hi);
-          (carried(mid) ? hi : lo) = mid;
-        }
-        g_hi = counted(Configuration::SlipWithoutPartTwo, hi).value_or(kBeyondDomain);
+      for (int k = 0; k < 200 && !bracketed && hi - lo > 1e-15 * hi; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        if (!carried(mid))
+          lo = mid;
+        else
+          bracketed = tried(mid);
       }
       if (!(g_hi < 0.0)) {
         plan.status = Status::NoConvergence;
@@ -717,6 +726,10 @@ class SphereTippedContact {
     plan.lo = hi;
     plan.g_lo = g_hi;
     plan.cap = locking_radial_stretch(law_, 1.0);
+    if (above && above->first > hi && above->first < plan.cap) {
+      plan.cap = above->first;
+      plan.g_cap = above->second;
+    }
     plan.no_root_message =
         "sphere-tipped shooting found no pole stretch meeting the clamp condition";
     return plan;
