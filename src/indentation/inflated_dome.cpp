@@ -175,8 +175,7 @@ void refuse_dome_past_limit_point(const Problem& held, const InflatedDome& dome,
   const double first = at.states.front().pole_stretch;
   for (const PressureExtremum& e : at.extrema)
     if (e.kind == ExtremumKind::Maximum && e.state.pole_stretch < first)
-      throw PhysicalFailure(
-          Status::OutsideModel,
+      throw PastLimitPoint(
           fmt::format("at {:g} MPa the inflated membrane is past its inflation limit point "
                       "({:.6g} MPa, pole stretch {:.5g}; the first state at {:g} MPa has pole "
                       "stretch {:.5g}, another branch): over a sealed chamber the path does not "
@@ -185,7 +184,8 @@ void refuse_dome_past_limit_point(const Problem& held, const InflatedDome& dome,
                       e.state.pressure_mpa,
                       e.state.pole_stretch,
                       p,
-                      first));
+                      first),
+          e.state.pressure_mpa);
 }
 
 }  // namespace puncture::detail

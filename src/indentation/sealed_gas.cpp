@@ -35,6 +35,7 @@ struct AtPressure {
 struct TrialFailed {
   Status status;
   std::string message;
+  double limit_mpa = std::numeric_limits<double>::quiet_NaN();  // past the limit point: its p
 };
 
 // Where a search upward stopped: the gas law's root lies above `passed_mpa` (its residual is
@@ -90,6 +91,8 @@ Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate,
     AtPressure<Result> a;
     try {
       a = evaluate(p);
+    } catch (const PastLimitPoint& e) {
+      throw TrialFailed{e.status(), e.what(), e.limit_mpa()};
     } catch (const PhysicalFailure& e) {
       throw TrialFailed{e.status(), e.what()};
     } catch (const std::exception& e) {
@@ -127,16 +130,33 @@ Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate,
       hi = step(lo, g_lo);
       if (hi == lo) return best->result;  // the law holds to the last bit of p
       // A step up may overshoot to a pressure no dome holds (past a limit point) while the root
-      // lies below it: such a trial is moved halfway back towards lo, up to 40 times.
+      // lies below it: such a trial is moved halfway back towards lo, up to 40 times.  Past the
+      // inflation limit point, whose pressure the failure knows, the first trial goes just below
+      // it (1e-3 of the way from lo): a residual still negative there puts the law's root past
+      // the limit point, on no state of the sealed branch.  Where that trial has no state
+      // either, the halving goes on from it.
+      std::optional<TrialFailed> past_limit;
+      bool near_limit = false;  // hi is the trial just below the limit point
       for (int halving = 0;; ++halving) {
         try {
           g_hi = residual(hi);
           break;
-        } catch (const TrialFailed&) {
+        } catch (const TrialFailed& f) {
+          near_limit = false;
+          if (!past_limit && std::isfinite(f.limit_mpa) && f.limit_mpa > lo && hi > lo) {
+            past_limit = f;
+            near_limit = true;
+            hi = lo + (1.0 - 1e-3) * (f.limit_mpa - lo);
+            continue;
+          }
           if (halving == 40 && hi > lo && g_lo < 0.0 && stop != nullptr) *stop = GasLawStop{lo, hi};
           if (hi < lo || halving == 40) throw;
           hi = lo + 0.5 * (hi - lo);
         }
+      }
+      if (near_limit && g_hi < 0.0) {
+        if (stop != nullptr) *stop = GasLawStop{hi, past_limit->limit_mpa};
+        throw *past_limit;
       }
       if (g_hi > 0.0 && hi == floor) return best->result;
     }
