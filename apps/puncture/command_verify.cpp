@@ -22,7 +22,8 @@ void add_verify_command(CLI::App& app, VerifyFlags& f) {
       "For the other probes (sphere-tipped, rounded corner, cone, ball): mu' = 0 and the\n"
       "work (not the stick stage, no Foppl disc), up to the puncture or the model's end.\n"
       "Under --pressure: mu' = 0 from the elements' own inflated dome (U - p V\n"
-      "minimised, the work against its change) and the dome against the shooting's");
+      "minimised, the work against its change) and the dome against the shooting's;\n"
+      "with --gas-volume over the sealed chamber (the gas law's pressure per depth)");
   f.command->footer(
       "The physical flags (see puncture --help) choose the membrane; the friction and stick\n"
       "flags are replaced by the two limits the finite elements cover.  Takes seconds.\n"

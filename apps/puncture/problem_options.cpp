@@ -273,7 +273,11 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "inflated state of --pressure (gauge; 0: closed flat), and the\n"
                      "isothermal ideal gas keeps (p + p_atm)(V0 + V) fixed, V the volume\n"
                      "between the membrane and its clamp plane: indenting compresses it.\n"
-                     "Depths from the sealed dome's pole; outputs report p and V.")
+                     "Depths from the sealed dome's pole; outputs report p and V.  Also a\n"
+                     "dome beyond a hemisphere, up to the inflation limit point (a gas\n"
+                     "compressed past it: exit 2), with friction (the energy to puncture\n"
+                     "along the path) and in 'verify' (closed at --pressure > 0); a stick\n"
+                     "stage (--stick) and 'inflate' are refused")
           ->group(kGeometry);
   f.atmospheric_pressure_option =
       app.add_option("--atmospheric-pressure",

@@ -59,6 +59,9 @@ struct FeState : Outcome {
   // Under a gas pressure p: the volume V between the membrane and its clamp plane [mm^3] (> 0
   // above it), so that Pi = U - p V is the energy minimised and dPi/d(depth) = F.  0 without.
   double volume_mm3 = 0.0;
+  // Under a gas pressure, the gauge pressure the state carries [MPa]: the held one, or over a
+  // sealed chamber the one its gas law gives with volume_mm3 (docs/model.md §17.2).  0 without.
+  double gas_pressure_mpa = 0.0;
   bool part_two = false;  // the membrane wraps the indenter's (cylinder) side
   // Flat punch: a / R at the corner (1 when held).  Smooth probe: the pole's equibiaxial stretch.
   double part_three_stretch = 1.0;
@@ -79,7 +82,9 @@ struct FeState : Outcome {
 
 // States at the given depths [mm] (increasing, > 0), each reached by continuation in depth from
 // the flat membrane, or under a gas pressure (frictionless only) from the elements' own inflated
-// dome, minimising U - p V, depths counted from its pole (docs/model.md §17.2).  Throws
+// dome, minimising U - p V, depths counted from its pole (docs/model.md §17.2).  Over a sealed
+// chamber (Preload::gas_volume_mm3, closed at a pressure > 0) each state is the one at the
+// pressure its own volume gives by the gas law, depths from the sealed dome's pole.  Throws
 // std::invalid_argument for an invalid problem, depths or options.
 std::vector<FeState> fe_solve_at_depths(const Problem& problem,
                                         const std::vector<double>& depths_mm, FeContact contact,
@@ -91,8 +96,9 @@ FeState fe_solve_at_depth(const Problem& problem, double depth_mm, FeContact con
 // contact, the minimum of U - p V from which fe_solve_at_depths starts (depth 0, no force; the
 // pole stretch as part_three_stretch, the pole's height above the clamp as -deflection_mm at
 // the first node), on `options.elements` elements linear in R (also a dome overhanging its
-// clamp).  A pressure the membrane cannot hold (it bursts or snaps through), or a later inflated
-// state that overhangs, is the state's status.  Throws
+// clamp); over a sealed chamber the dome it is closed at.  A pressure the membrane cannot hold
+// (it bursts or snaps through), or a later inflated state that overhangs, is the state's status.
+// Throws
 // std::invalid_argument for an invalid problem or options, or without a pressure.
 FeState fe_inflated_state(const Problem& problem, const FeOptions& options = {});
 

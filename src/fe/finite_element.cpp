@@ -16,6 +16,7 @@
 #include "fe/part_evaluation.hpp"
 #include "fe/probe_profiles.hpp"
 #include "fe/rigid_profile.hpp"
+#include "fe/sealed_chamber_fe.hpp"
 #include "fe/smooth_probe.hpp"
 
 namespace puncture {
@@ -448,10 +449,14 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
     throw InvalidInput("preload.pressure_mpa",
                        "under a gas pressure the finite elements are frictionless only (a held "
                        "edge would need the stick stage's history of the face)");
-  if (problem.preload.gas_volume_mm3)
-    throw InvalidInput(
-        "preload.gas_volume_mm3",
-        "the finite-element method is not implemented over a sealed gas chamber yet");
+  if (problem.preload.gas_volume_mm3 && !pressurised)
+    throw InvalidInput("preload.pressure_mpa",
+                       "over a sealed gas chamber the finite elements need it closed at a gauge "
+                       "pressure > 0 MPa (closed flat, the flat membrane has no volume to start "
+                       "from in the elements' layouts)");
+  if (problem.preload.gas_volume_mm3 && contact == FeContact::Held)
+    throw InvalidInput("preload.gas_volume_mm3",
+                       "over a sealed gas chamber the finite elements are frictionless only");
   check_options(options);
   const double A = reference_clamp_radius_mm(problem);
   double last = 0.0;
@@ -461,6 +466,7 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
           "depths must be finite, > 0 and increasing (got {} mm after {} mm)", d, last));
     last = d;
   }
+  if (problem.preload.gas_volume_mm3) return fe::solve_sealed_chamber(problem, depths_mm, options);
   if (smooth)
     return fe::solve_smooth_probe(
         problem, *fe::smooth_profile(problem.indenter, A), depths_mm, options);
@@ -525,11 +531,14 @@ FeState fe_solve_at_depth(const Problem& problem, double depth_mm, FeContact con
 
 FeState fe_inflated_state(const Problem& problem, const FeOptions& options) {
   validate(problem);
-  if (!(problem.preload.pressure_mpa > 0.0) || problem.preload.gas_volume_mm3)
+  if (!(problem.preload.pressure_mpa > 0.0))
     throw InvalidInput("preload.pressure_mpa",
-                       "the finite elements' inflated state needs a held gas pressure > 0 MPa");
+                       "the finite elements' inflated state needs a gas pressure > 0 MPa");
   check_options(options);
-  return fe::solve_dome(problem, options).state;
+  // Over a sealed chamber: the dome it is closed at, the held one at the sealing pressure.
+  Problem held = problem;
+  held.preload.gas_volume_mm3.reset();
+  return fe::solve_dome(held, options).state;
 }
 
 std::optional<double> fe_first_invariant(const FeState& state, MembranePart part,

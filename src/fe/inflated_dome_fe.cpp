@@ -90,6 +90,7 @@ FeDome solve_dome(const Problem& problem, const FeOptions& options) {
                               problem.geometry.thickness_mm * A * A;
   state.stored_energy_nmm = (newton.assembly.energy - mesh.pressure * volume) * energy_scale;
   state.volume_mm3 = -2.0 * std::numbers::pi * volume * A * A * A;
+  state.gas_pressure_mpa = problem.preload.pressure_mpa;
   FePart out;
   out.part = MembranePart::Free;
   out.elements = part.elements;

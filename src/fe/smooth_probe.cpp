@@ -264,6 +264,7 @@ FeState make_state(const Problem& problem, const RigidProfile& profile, const Me
     reaction += 0.5 * s.pressure * edge_radius * edge_radius;
     const double free_volume = free_volume_integral(mesh, x);
     energy -= s.pressure * free_volume;
+    state.gas_pressure_mpa = problem.preload.pressure_mpa;
     state.volume_mm3 = -2.0 * std::numbers::pi *
                        (free_volume + contact_volume_integral(mesh, x, profile, s.tip())) * A * A *
                        A;

@@ -159,16 +159,33 @@ bool overhangs_clamp(const InflatedDome& dome) {
   return !(dome.clamp_slope < boost::math::constants::half_pi<double>());
 }
 
-void refuse_overhanging_dome(const InflatedDome& dome, double pressure_mpa) {
-  if (overhangs_clamp(dome))
+void refuse_dome_past_limit_point(const Problem& held, const InflatedDome& dome,
+                                  const SolverOptions& options) {
+  // Below a hemisphere the first state lies below any limit point (the limit points of the
+  // clamped membranes lie past the hemisphere, §17): only an overhanging dome is asked.
+  if (!overhangs_clamp(dome)) return;
+  const double p = held.preload.pressure_mpa;
+  SolverOptions quiet = options;
+  quiet.record_fields = false;
+  const InflationAtPressure at = inflate_at_pressure(inflation_problem(held), p, {}, quiet);
+  if (!at.ok() || at.states.empty())
     throw PhysicalFailure(
-        Status::OutsideModel,
-        fmt::format(
-            "at {:g} MPa the inflated membrane overhangs its clamp (slope {:.4g} rad at the "
-            "clamp): indenting a dome beyond a hemisphere over a sealed chamber is not "
-            "modelled",
-            pressure_mpa,
-            dome.clamp_slope));
+        Status::NoConvergence,
+        fmt::format("at {:g} MPa the inflated states are not found: {}", p, at.message));
+  const double first = at.states.front().pole_stretch;
+  for (const PressureExtremum& e : at.extrema)
+    if (e.kind == ExtremumKind::Maximum && e.state.pole_stretch < first)
+      throw PastLimitPoint(
+          fmt::format("at {:g} MPa the inflated membrane is past its inflation limit point "
+                      "({:.6g} MPa, pole stretch {:.5g}; the first state at {:g} MPa has pole "
+                      "stretch {:.5g}, another branch): over a sealed chamber the path does not "
+                      "continue onto another inflated branch",
+                      p,
+                      e.state.pressure_mpa,
+                      e.state.pole_stretch,
+                      p,
+                      first),
+          e.state.pressure_mpa);
 }
 
 }  // namespace puncture::detail

@@ -28,8 +28,12 @@ std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOp
 // Whether the dome's meridian overhangs its clamp (slope at the clamp >= pi/2).
 bool overhangs_clamp(const InflatedDome& dome);
 
-// Over a sealed chamber a trial gas pressure whose dome overhangs its clamp is not searched
-// (docs/model.md §17.1): throws PhysicalFailure (OutsideModel) naming the pressure if it does.
-void refuse_overhanging_dome(const InflatedDome& dome, double pressure_mpa);
+// Over a sealed chamber a trial gas pressure's dome must lie on the branch the chamber was sealed
+// on (docs/model.md §17.1): one that overhangs its clamp does below the inflation's first limit
+// point, and is indented as it stands; above it the first state at the pressure is the balloon
+// past the limit point, another branch.  Throws PhysicalFailure (OutsideModel) naming the
+// pressure and the limit point's when `dome` (of `held`, at a held pressure) is past it.
+void refuse_dome_past_limit_point(const Problem& held, const InflatedDome& dome,
+                                  const SolverOptions& options);
 
 }  // namespace puncture::detail

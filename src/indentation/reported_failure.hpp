@@ -24,6 +24,18 @@ class PhysicalFailure : public std::runtime_error {
   Status status_;
 };
 
+// A trial gas pressure over a sealed chamber past the inflation's limit point (inflated_dome.hpp):
+// a PhysicalFailure (OutsideModel) that knows the limit point's pressure [MPa].
+class PastLimitPoint : public PhysicalFailure {
+ public:
+  PastLimitPoint(const std::string& message, double limit_mpa)
+      : PhysicalFailure(Status::OutsideModel, message), limit_mpa_(limit_mpa) {}
+  double limit_mpa() const { return limit_mpa_; }
+
+ private:
+  double limit_mpa_;
+};
+
 template <class Result, class Body>
 Result reporting_failures(Body&& body) {
   try {

@@ -16,6 +16,7 @@
 #include "indentation/path_puncture.hpp"
 #include "indentation/reported_failure.hpp"
 #include "indentation/sealed_global_limit.hpp"
+#include "indentation/sealed_path_work.hpp"
 #include "indentation/solver_scales.hpp"
 #include "indentation/stored_energy.hpp"
 
@@ -34,6 +35,7 @@ struct AtPressure {
 struct TrialFailed {
   Status status;
   std::string message;
+  double limit_mpa = std::numeric_limits<double>::quiet_NaN();  // past the limit point: its p
 };
 
 // Where a search upward stopped: the gas law's root lies above `passed_mpa` (its residual is
@@ -49,13 +51,14 @@ SolverOptions with_fields(SolverOptions o) {
 }
 
 // The inflated pole's height above the clamp plane at the problem's pressure [mm]; throws
-// PhysicalFailure where that dome overhangs its clamp (not searched over a sealed chamber).
+// PhysicalFailure where that dome lies past the inflation limit point (another branch than the
+// sealed one's).  A dome overhanging its clamp below it is indented as it stands (§17).
 double dome_height_mm(const Problem& held, const SolverOptions& options) {
   SolverOptions quiet = options;
   quiet.record_fields = false;
   const auto dome = inflated_dome(held, quiet);
   if (!dome) return 0.0;
-  refuse_overhanging_dome(*dome, held.preload.pressure_mpa);
+  refuse_dome_past_limit_point(held, *dome, quiet);
   return dome->height * solver_scales(held).length_mm;
 }
 
@@ -88,6 +91,8 @@ Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate,
     AtPressure<Result> a;
     try {
       a = evaluate(p);
+    } catch (const PastLimitPoint& e) {
+      throw TrialFailed{e.status(), e.what(), e.limit_mpa()};
     } catch (const PhysicalFailure& e) {
       throw TrialFailed{e.status(), e.what()};
     } catch (const std::exception& e) {
@@ -125,16 +130,33 @@ Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate,
       hi = step(lo, g_lo);
       if (hi == lo) return best->result;  // the law holds to the last bit of p
       // A step up may overshoot to a pressure no dome holds (past a limit point) while the root
-      // lies below it: such a trial is moved halfway back towards lo, up to 40 times.
+      // lies below it: such a trial is moved halfway back towards lo, up to 40 times.  Past the
+      // inflation limit point, whose pressure the failure knows, the first trial goes just below
+      // it (1e-3 of the way from lo): a residual still negative there puts the law's root past
+      // the limit point, on no state of the sealed branch.  Where that trial has no state
+      // either, the halving goes on from it.
+      std::optional<TrialFailed> past_limit;
+      bool near_limit = false;  // hi is the trial just below the limit point
       for (int halving = 0;; ++halving) {
         try {
           g_hi = residual(hi);
           break;
-        } catch (const TrialFailed&) {
+        } catch (const TrialFailed& f) {
+          near_limit = false;
+          if (!past_limit && std::isfinite(f.limit_mpa) && f.limit_mpa > lo && hi > lo) {
+            past_limit = f;
+            near_limit = true;
+            hi = lo + (1.0 - 1e-3) * (f.limit_mpa - lo);
+            continue;
+          }
           if (halving == 40 && hi > lo && g_lo < 0.0 && stop != nullptr) *stop = GasLawStop{lo, hi};
           if (hi < lo || halving == 40) throw;
           hi = lo + 0.5 * (hi - lo);
         }
+      }
+      if (near_limit && g_hi < 0.0) {
+        if (stop != nullptr) *stop = GasLawStop{hi, past_limit->limit_mpa};
+        throw *past_limit;
       }
       if (g_hi > 0.0 && hi == floor) return best->result;
     }
@@ -157,6 +179,14 @@ Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate,
         g_hi,
         [&](double a, double b) { return std::abs(b - a) <= 1e-12 * (std::abs(a) + p_atm); },
         iterations);
+    // A residual left where the bracket closed on a jump of the volume (another branch's state
+    // at one end), never a state off the law: ~1e-12 of C where the law holds.
+    if (!(best_residual <= 1e-9 * c.gas_content_n_mm()))
+      throw TrialFailed{Status::NoConvergence,
+                        fmt::format("the gas law is met to {:.3g} of the gas's content only (the "
+                                    "enclosed volume jumps near {:.8g} MPa)",
+                                    best_residual / c.gas_content_n_mm(),
+                                    trial)};
     return best->result;
   } catch (const TrialFailed& f) {
     Result r;
@@ -259,20 +289,38 @@ Equilibrium sealed_at_force(const Problem& p, const SealedChamber& c, double for
 
 namespace {
 
+// The state of a constant-pressure puncture with its fields: at its force, or where that search
+// closes on another inflated branch's root (a dome beyond a hemisphere, §17) at its depth, which
+// depth control from the dome keeps on the path.
+Equilibrium puncture_state(const Problem& held, const PuncturePrediction& at,
+                           const SolverOptions& options) {
+  Equilibrium state = solve_at_force(held, at.force_n, at.stage, options);
+  if (state.ok()) return state;
+  Equilibrium by_depth = solve_at_depth(held, at.depth_mm, at.stage, options);
+  return by_depth.ok() ? by_depth : state;
+}
+
 // The energy to puncture over the chamber: without friction dPi/d(depth) = F along the sealed
 // path (docs/model.md §17.1), so the work is Pi at the puncture less Pi at the sealed dome, with
 // Pi = U + p_atm (V - V_s) - C ln((V0 + V) / (V0 + V_s)) evaluated as U - P (V - V_s) - C (ln(1 +
 // x) - x), x = (V - V_s) / (V0 + V_s) (the terms p_atm dV, each ~300 times the rest, cancel
 // analytically).  U and V of both states from fields of 2000 samples (to ~1e-8 of U).  With
-// friction the work exceeds the change of Pi by what the friction dissipates: not computed.
+// friction the work exceeds the change of Pi by what the friction dissipates: the force is
+// integrated along the sealed path instead (sealed_path_work.hpp).
 void add_sealed_energy_to_puncture(const Problem& p, const SealedChamber& c,
                                    const SolverOptions& options, PuncturePrediction& puncture) {
   auto note = [&](const std::string& why) {
     puncture.message += (puncture.message.empty() ? "" : "; ") +
                         fmt::format("no energy to puncture over the sealed chamber: {}", why);
   };
+  // With friction the work is not a change of energy (friction dissipates): the force's
+  // integral along the sealed path itself.
   if (p.friction > 0.0) {
-    note("with friction the work is not a change of energy (friction dissipates)");
+    const SealedPathWork path = sealed_path_work(p, c, puncture.depth_mm, options);
+    if (path.work_mj)
+      puncture.energy_to_puncture_mj = path.work_mj;
+    else
+      note(path.why);
     return;
   }
   if (!puncture.state.gas) {
@@ -284,10 +332,11 @@ void add_sealed_energy_to_puncture(const Problem& p, const SealedChamber& c,
   fine.field_points = std::max(options.field_points, 2000);
   const Equilibrium dome =
       solve_at_depth(at_held_pressure(p, c.sealed_pressure_mpa), 0.0, Stage::Slip, fine);
-  const Equilibrium at = solve_at_force(at_held_pressure(p, puncture.state.gas->pressure_mpa),
-                                        puncture.force_n,
-                                        puncture.stage,
-                                        fine);
+  // The puncture's state at its own pressure, its depth counted from that pressure's dome.
+  const Problem held = at_held_pressure(p, puncture.state.gas->pressure_mpa);
+  PuncturePrediction at_own = puncture;
+  at_own.depth_mm = puncture.depth_mm + dome_height_mm(held, options) - c.sealed_height_mm;
+  const Equilibrium at = puncture_state(held, at_own, fine);
   if (!dome.ok() || !at.ok()) {
     note(dome.ok() ? at.message : dome.message);
     return;
@@ -316,8 +365,7 @@ PuncturePrediction sealed_puncture(const Problem& p, const SolverOptions& option
         AtPressure<PuncturePrediction> at{puncture_on_path(held, search, false)};
         if (!at.result.ok()) return at;
         // The puncture state with its fields, for its volume.
-        Equilibrium state =
-            solve_at_force(held, at.result.force_n, at.result.stage, with_fields(options));
+        Equilibrium state = puncture_state(held, at.result, with_fields(options));
         if (!state.ok()) {
           at.result.status = state.status;
           at.result.message = "the state at puncture: " + state.message;

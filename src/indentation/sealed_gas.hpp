@@ -46,8 +46,8 @@ Equilibrium sealed_at_force(const Problem& p, const SealedChamber& chamber, doub
 // The puncture over the chamber: the constant-pressure puncture at the pressure its own state
 // satisfies the gas law at (a state depends on the pressure and the force alone, not on the
 // path: the problem slides, no stick stage).  energy_to_puncture, without friction, is the
-// change of U + the gas's and the atmosphere's energy from the sealed dome (with friction not
-// computed: a note in the message).
+// change of U + the gas's and the atmosphere's energy from the sealed dome; with friction the
+// force integrated along the sealed path (sealed_path_work.hpp).
 PuncturePrediction sealed_puncture(const Problem& p, const SolverOptions& options);
 
 // The loading curve over the chamber, every point with its gas; Part II's onset by bisection

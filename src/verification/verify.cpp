@@ -36,6 +36,20 @@ bool smooth_probe(const Problem& problem) { return !sharp_flat_punch(problem.ind
 // (the sharp flat punch's face first touches a growing disc): the smooth probes' rows.
 bool inflated(const Problem& problem) { return problem.preload.pressure_mpa > 0.0; }
 bool profile_rows(const Problem& problem) { return smooth_probe(problem) || inflated(problem); }
+bool sealed(const Problem& problem) { return problem.preload.gas_volume_mm3.has_value(); }
+
+// The change of the potential whose derivative in the depth is the force, from the dome `d` to
+// the state `s` (docs/model.md §17.1, §17.2): U - p V at a held pressure; over a sealed chamber
+// U - P (V - V_d) - C (ln(1 + x) - x), x = (V - V_d) / (V0 + V_d), C = (P + p_atm)(V0 + V_d)
+// (the terms p_atm dV cancel analytically), each method with its own dome's volume.
+double potential_change_nmm(const Problem& q, const FeState& s, const FeState& d) {
+  const double p = q.preload.pressure_mpa, dv = s.volume_mm3 - d.volume_mm3;
+  const double du = s.stored_energy_nmm - d.stored_energy_nmm;
+  if (!sealed(q)) return du - p * dv;
+  const double gas = *q.preload.gas_volume_mm3 + d.volume_mm3;
+  const double x = dv / gas;
+  return du - p * dv - (p + q.preload.atmospheric_pressure_mpa) * gas * (std::log1p(x) - x);
+}
 
 // The user's membrane in one of the two limits the finite elements cover.
 Problem limit_problem(const Problem& problem, FeContact contact) {
@@ -173,6 +187,21 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
       checks.rows.push_back(c);
       continue;
     }
+    if (sealed(q) && e.gas) {
+      // The gas law's pressure from each method's own volume.
+      const double pressure_error =
+          estimated_error(fe[k].gas_pressure_mpa, fe_coarse[k].gas_pressure_mpa, 4);
+      checks.rows.push_back(
+          check(group,
+                "gas pressure [MPa]",
+                where,
+                e.gas->pressure_mpa,
+                fe[k].gas_pressure_mpa,
+                std::max(1e-8, 4.0 * pressure_error),
+                fmt::format("from each method's volume by the gas law: 1e-8, or 4x the elements' "
+                            "error (estimated {:.1e}, order 4)",
+                            pressure_error)));
+    }
     const double force_error = estimated_error(fe[k].force_n, fe_coarse[k].force_n, 4);
     checks.rows.push_back(check(
         group,
@@ -273,27 +302,26 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
     return;
   }
   if (inflated(q)) {
-    // At constant pressure the work goes into Pi = U - p V (docs/model.md §17): against the
-    // elements' Pi less their dome's.
+    // At constant pressure the work goes into Pi = U - p V (docs/model.md §17), over a sealed
+    // chamber into U and the gas's and the atmosphere's energy (§17.1): against the elements'
+    // Pi less their dome's.
     FeOptions fine_dome, coarse_dome;
     fine_dome.elements = options.elements;
     coarse_dome.elements = std::max(2, options.elements / 2);
     const FeState dome = fe_inflated_state(q, fine_dome);
     const FeState dome_coarse = fe_inflated_state(q, coarse_dome);
+    const char* quantity = sealed(q) ? "work of F = change of U + gas energy [N mm]"
+                                     : "work of F = change of U - p V [N mm]";
     if (!dome.ok() || !dome_coarse.ok()) {
-      checks.rows.push_back(
-          skipped(group, "work of F = change of U - p V [N mm]", where, "dome: " + dome.message));
+      checks.rows.push_back(skipped(group, quantity, where, "dome: " + dome.message));
       return;
     }
-    const double p = q.preload.pressure_mpa;
-    auto change = [&](const FeState& s, const FeState& d) {
-      return s.stored_energy_nmm - p * s.volume_mm3 - (d.stored_energy_nmm - p * d.volume_mm3);
-    };
-    const double fine_change = change(last, dome), coarse_change = change(last_coarse, dome_coarse);
+    const double fine_change = potential_change_nmm(q, last, dome),
+                 coarse_change = potential_change_nmm(q, last_coarse, dome_coarse);
     const double change_error = estimated_error(fine_change, coarse_change, 4);
     checks.rows.push_back(
         check(group,
-              "work of F = change of U - p V [N mm]",
+              quantity,
               where,
               work,
               fine_change,
@@ -457,10 +485,11 @@ void compare_inflated_dome(const Problem& problem, const VerifyOptions& options,
 
 VerificationReport verify(const Problem& problem, const VerifyOptions& options) {
   validate(problem);
-  if (problem.preload.gas_volume_mm3)
-    throw InvalidInput(
-        "preload.gas_volume_mm3",
-        "the verification methods are not implemented over a sealed gas chamber yet");
+  if (sealed(problem) && !inflated(problem))
+    throw InvalidInput("preload.pressure_mpa",
+                       "over a sealed gas chamber the verification needs it closed at a gauge "
+                       "pressure > 0 MPa (the finite elements start from their own inflated "
+                       "dome), got 0");
   if (options.elements < 4 || options.elements > 4096)
     throw std::invalid_argument(
         fmt::format("elements: must be in the range 4 to 4096, got {}", options.elements));
