@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <numbers>
@@ -297,6 +298,30 @@ struct HeldEndReached {
   std::string message;
 };
 
+// A convex kink where the contact must end (the cone's shank).
+bool kink_at_end(const RigidProfile& profile) {
+  const double end = profile.contact_end();
+  return std::isfinite(end) && std::abs(profile.radius_slope(std::nextafter(end, 0.0)) -
+                                        profile.radius_slope(end * (1.0 + 1e-9))) > 1e-6;
+}
+
+// The held membrane pivoting over such a kink keeps its nodes outside the probe while the kink
+// pokes through the element between them: the membrane then crosses the kink's radius above the
+// kink (inside the probe), where before the end it leaves the cone tangentially and crosses that
+// radius below it, outside.  (The nodes' polyline: linear between them.)
+bool crosses_kink_at_end(const HeldNodes& nodes, const RigidProfile& profile) {
+  if (!kink_at_end(profile)) return false;
+  const double end = profile.contact_end();
+  const double kink_r = profile.radius(std::nextafter(end, 0.0)), kink_y = profile.height(end);
+  for (std::size_t i = 0; i + 1 < nodes.r.size(); ++i)
+    if (nodes.r[i] < kink_r && nodes.r[i + 1] >= kink_r) {
+      const double w = (kink_r - nodes.r[i]) / (nodes.r[i + 1] - nodes.r[i]);
+      const double y = nodes.tip - (nodes.z[i] + w * (nodes.z[i + 1] - nodes.z[i]));
+      return y > kink_y * (1.0 + 1e-9);
+    }
+  return false;
+}
+
 // One continuation step from `current` towards depth `tip`: either the state there, no free node
 // having reached the profile, or the state at the first depth where one reaches it (the smallest
 // gap's root, TOMS 748 to ~1e-13 of the depth), that node then held at its profile point and the
@@ -316,7 +341,12 @@ HeldNodes held_step(const Problem& problem, const HeldLayout& layout, const Rigi
   if (gap_before > 0.0) {
     HeldNodes trial = solve(tip);
     const double gap_after = smallest_gap(trial, profile).first;
-    if (gap_after >= 0.0) return trial;
+    if (gap_after >= 0.0) {
+      if (crosses_kink_at_end(trial, profile))
+        throw HeldEndReached{Status::OutsideModel,
+                             "held where it touched, " + profile.beyond_contact_end()};
+      return trial;
+    }
     auto gap_at = [&](double depth) { return smallest_gap(solve(depth), profile).first; };
     boost::uintmax_t iterations = 60;
     const auto root =
@@ -337,14 +367,15 @@ HeldNodes held_step(const Problem& problem, const HeldLayout& layout, const Rigi
     const double s = profile.closest_arclength(touched.r[node], touched.tip - touched.z[node]);
     // Near the held models' end the held stretch grows steeply (the last 2 % of the held material
     // covers the last third of the sphere's arc), so the node after the material that ends at
-    // the end may touch just past it: one node is held there (the discrete edge within a node of
-    // the end, as everywhere), the next one ends the history.
+    // the end may touch just past a smooth end (an equator): one node is held there (the discrete
+    // edge within a node of the end, as everywhere), the next one ends the history.  Past a kink
+    // (the cone's shank) the first one does.
     const bool past_end = s > end * (1.0 + 1e-12);
     const bool one_past_already =
         std::any_of(touched.s.begin(), touched.s.end(), [&](double held_at) {
           return held_at > end * (1.0 + 1e-12);
         });
-    if (past_end && one_past_already) {
+    if (past_end && (one_past_already || kink_at_end(profile))) {
       if (std::isfinite(profile.contact_end()))
         throw HeldEndReached{Status::OutsideModel,
                              "held where it touched, " + profile.beyond_contact_end()};
@@ -359,6 +390,9 @@ HeldNodes held_step(const Problem& problem, const HeldLayout& layout, const Rigi
     if (!settled) throw std::runtime_error(failure);
     touched = *settled;
   }
+  if (crosses_kink_at_end(touched, profile))
+    throw HeldEndReached{Status::OutsideModel,
+                         "held where it touched, " + profile.beyond_contact_end()};
   return touched;
 }
 
