@@ -321,10 +321,11 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
 // contact map of docs/model.md §15.4, §15.5) against the finite elements held where the membrane
 // touched (§15.3, "Held where it touched"), at depths up to the held puncture or the held model's
 // end.  The elements' force error has no smooth expansion (the edge stays at a node between the
-// depths where a node touches: a sawtooth); its envelope converges as h^2 (sphere-tipped probe,
-// 2 to 120 mm: 5.2e-4, 1.05e-4, 3.2e-5 at 64, 128, 256 elements; the cone's worst, where its edge
-// leaves the tip sphere, 4.5e-4 and 2.7e-4 at 64 and 128), so the tolerance is twice the worst
-// measured, 2e-3 (64 / n)^2, or 4x the error estimated from the half mesh, whichever is larger.
+// depths where a node touches: a sawtooth); its envelope converges about as h^2 on the
+// sphere-tipped probe and the fillet (sphere, 2 to 120 mm: 2.7e-3, 5.2e-4, 1.05e-4, 3.2e-5 at 32
+// to 256 elements) but only as h^0.15 between 64 and 128 on the cone's 0.5 mm tip at 1.5 mm
+// (5.8e-4, 5.2e-4), so the floor is first order, 2.5e-3 (64 / n), at least twice the worst
+// measured at 64 to 256 elements, or 4x the error estimated from the half mesh (order 2).
 void compare_held_smooth_probe(const Problem& problem, const VerifyOptions& options,
                                Checks& checks) {
   const Problem q = limit_problem(problem, FeContact::Held);
@@ -347,7 +348,7 @@ void compare_held_smooth_probe(const Problem& problem, const VerifyOptions& opti
   const std::vector<FeState> fe_coarse = fe_solve_at_depths(q, depths, FeContact::Held, coarse);
   const std::string range_note =
       why.empty() ? "of the held puncture depth" : "of the held loading curve's last depth";
-  const double envelope = 2e-3 * std::pow(64.0 / fine.elements, 2);
+  const double envelope = 2.5e-3 * 64.0 / fine.elements;
   for (std::size_t k = 0; k < depths.size(); ++k) {
     const std::string where =
         fmt::format("depth {:.5g} mm ({}/{} {})", depths[k], k + 1, options.depths, range_note);
@@ -377,8 +378,8 @@ void compare_held_smooth_probe(const Problem& problem, const VerifyOptions& opti
               e.force_n,
               fe[k].force_n,
               std::max(envelope, 4.0 * force_error),
-              fmt::format("twice the elements' measured worst, {:.1e} at {} elements, or 4x "
-                          "their error (estimated {:.1e}, order 2)",
+              fmt::format("at least twice the elements' measured worst, {:.1e} at {} "
+                          "elements, or 4x their error (estimated {:.1e}, order 2)",
                           envelope,
                           fine.elements,
                           force_error)));
