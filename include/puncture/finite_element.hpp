@@ -32,7 +32,8 @@ enum class FeContact {
 
 struct FeOptions {
   int elements = 64;  // along the free part (Part I); Parts II, III (a smooth probe: each contact
-                      // segment, cap and side) get a quarter each
+                      // segment, cap and side) get a quarter each; held on a smooth probe, the
+                      // reach that may be held half and a flat face an eighth
   int order = 2;      // polynomial order of the elements: 1 (linear) or 2 (quadratic)
   int max_newton_iterations = 60;  // per depth step
   int max_step_halvings = 16;      // continuation in depth: refinements of one step before failing
