@@ -69,9 +69,11 @@ HeldLayout held_layout(const RigidProfile& profile, double prestretch, const FeO
   HeldLayout layout;
   layout.order = options.order;
   const double face = profile.rise_start() / prestretch;  // R of the face's edge
-  // The material that can reach the held end: held stretches are at least the pre-stretch.
+  // The material that can reach the held end: held stretches are at least the pre-stretch (kept
+  // inside the clamp, for a probe nearly as wide as the opening).
   const double reach =
-      std::min(face + (held_end_arclength(profile) - profile.rise_start()) / prestretch, 0.8);
+      std::min(face + (held_end_arclength(profile) - profile.rise_start()) / prestretch,
+               face + 0.8 * (1.0 - face));
   double start = 0.0;
   if (face > 0.0) {
     layout.parts.push_back(
@@ -162,7 +164,7 @@ Mesh held_mesh(const HeldLayout& layout, const HeldNodes& nodes, const RigidProf
   return mesh;
 }
 
-// The reference radius of the outermost held node (the contact edge).
+// The outermost held node (the contact edge).
 int edge_node(const HeldNodes& nodes) {
   int edge = 0;
   for (int i = 0; i < int(nodes.held.size()); ++i)
