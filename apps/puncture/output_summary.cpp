@@ -97,9 +97,10 @@ std::string summary_text(const VerifyReport& r) {
         "Verification: the shooting solver against independent methods\n"
         "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
         "  for their own error), the membrane lying on the probe's profile up to a contact\n"
-        "  edge the method finds, minimising the stored energy at mu' = 0.  The probe's stick\n"
-        "  stage and the small-deflection (Foppl) limit are not checked; friction (mu' = {}\n"
-        "  here) is checked by the test suite's Coulomb identities.\n",
+        "  edge the method finds, minimising the stored energy at mu' = 0; with --stick always\n"
+        "  also held where the membrane touched (the force).  The small-deflection (Foppl)\n"
+        "  limit is not checked; friction (mu' = {} here) is checked by the test suite's\n"
+        "  Coulomb identities.\n",
         v.elements,
         v.elements / 2,
         num(r.problem.friction, "friction"));

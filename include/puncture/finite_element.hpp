@@ -7,9 +7,12 @@
 // frictionless (tip, corner and side) and held at its edge, and every other probe (sphere-tipped,
 // flat punch with a rounded corner, cone, ball) frictionless (the membrane lying on its profile
 // from the pole to a contact edge found by the method: docs/model.md, "Finite elements on a
-// smooth probe"); a contact past the cone's shank or the ball's equator is Status::OutsideModel,
-// as in the shooting.  Coulomb friction is not modelled (it is dissipative: there is no energy to
-// minimise).  A probe other than the sharp flat punch held throws InvalidInput("indenter", ...).
+// smooth probe") and held where it touched (the stick rule `always`: each node, once it reaches
+// the profile, stays at that arclength and moves with the probe; docs/model.md §15.3, "Held where
+// it touched"); a contact past the cone's shank or the ball's equator is Status::OutsideModel,
+// and a held membrane reaching the sphere-tipped probe's or the fillet's cylinder side
+// Status::StickWrapsSide, as in the shooting.  Coulomb friction is not modelled (it is
+// dissipative: there is no energy to minimise).
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,12 +25,15 @@ namespace puncture {
 
 enum class FeContact {
   Frictionless,  // the membrane slides freely over the tip, the corner and the side (mu' = 0)
-  Held,          // the membrane is held at the indenter's edge: the stick stage (fully stuck)
+  Held,          // the stick stage (fully stuck): held at the sharp punch's edge, or on a smooth
+                 // probe where each material point touched (one loading history from the flat
+                 // membrane, an event at each depth where a node reaches the profile)
 };
 
 struct FeOptions {
   int elements = 64;  // along the free part (Part I); Parts II, III (a smooth probe: each contact
-                      // segment, cap and side) get a quarter each
+                      // segment, cap and side) get a quarter each; held on a smooth probe, the
+                      // reach that may be held half and a flat face an eighth
   int order = 2;      // polynomial order of the elements: 1 (linear) or 2 (quadratic)
   int max_newton_iterations = 60;  // per depth step
   int max_step_halvings = 16;      // continuation in depth: refinements of one step before failing

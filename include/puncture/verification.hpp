@@ -11,9 +11,11 @@
 //     small-strain solver, for held and sliding edges.
 // Friction between the two limits (the user's mu') has no second method: it is covered by the
 // Coulomb and capstan identities of the test suite (tests/solver).  On every other probe
-// (sphere-tipped, rounded corner, cone, ball) only the frictionless limit is checked (force, pole
+// (sphere-tipped, rounded corner, cone, ball) the frictionless limit is checked (force, pole
 // stretch, contact edge, largest I1, work), up to the puncture or, for the cone and the ball, the
-// end of their model: the stick stage is not modelled, and the Foppl check is the flat punch's.
+// end of their model (the Foppl check is the flat punch's); with the stick rule `always` (and no
+// gas) also the held force against the elements held where the membrane touched, up to the held
+// puncture or the held model's end (group "held where it touched").
 #include <functional>
 #include <string>
 #include <string_view>

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "fe/energy_newton.hpp"
+#include "fe/held_smooth_probe.hpp"
 #include "fe/inflated_dome_fe.hpp"
 #include "fe/meridian_mesh.hpp"
 #include "fe/part_evaluation.hpp"
@@ -438,12 +439,6 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
                                         const FeOptions& options) {
   validate(problem);
   const bool smooth = !sharp_flat_punch(problem.indenter);
-  if (smooth && contact == FeContact::Held)
-    throw InvalidInput(
-        "indenter",
-        "the finite elements hold the membrane at the flat punch's edge only (a sharp "
-        "corner); on the " +
-            describe(problem.indenter) + " they are frictionless");
   const bool pressurised = problem.preload.pressure_mpa > 0.0;
   if (pressurised && contact == FeContact::Held)
     throw InvalidInput("preload.pressure_mpa",
@@ -467,6 +462,9 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
     last = d;
   }
   if (problem.preload.gas_volume_mm3) return fe::solve_sealed_chamber(problem, depths_mm, options);
+  if (smooth && contact == FeContact::Held)  // held where it touched
+    return fe::solve_held_smooth_probe(
+        problem, *fe::smooth_profile(problem.indenter, A), depths_mm, options);
   if (smooth)
     return fe::solve_smooth_probe(
         problem, *fe::smooth_profile(problem.indenter, A), depths_mm, options);
@@ -553,7 +551,8 @@ std::optional<double> fe_first_invariant(const FeState& state, MembranePart part
 }
 
 std::string to_string(FeContact contact) {
-  return contact == FeContact::Held ? "held at the indenter's edge" : "frictionless";
+  return contact == FeContact::Held ? "held (at the indenter's edge, or where it touched)"
+                                    : "frictionless";
 }
 
 }  // namespace puncture

@@ -362,9 +362,11 @@ TEST(FilletedFlatPunch, BadInputIsRefused) {
   Problem sharp_held = filleted_problem(0.0);
   sharp_held.stick = {StickRule::Always, 0.0};
   EXPECT_TRUE(validation_errors(sharp_held).empty());
-  // The finite elements hold the membrane at the sharp punch's edge only; frictionless they lie
-  // on the fillet (tests/verification/finite_element_probes_test.cpp).
-  EXPECT_THROW(fe_solve_at_depth(filleted_problem(0.5), 5.0, FeContact::Held), InvalidInput);
+  // Held, the finite elements follow the fillet's membrane where it touched
+  // (tests/fe/held_smooth_probe_test.cpp); under a gas pressure they refuse it.
+  Problem gas_fe = filleted_problem(0.5);
+  gas_fe.preload.pressure_mpa = 1e-4;
+  EXPECT_THROW(fe_solve_at_depth(gas_fe, 5.0, FeContact::Held), InvalidInput);
 }
 
 }  // namespace

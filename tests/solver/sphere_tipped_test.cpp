@@ -283,9 +283,8 @@ TEST(SphereTipped, PunctureAtThePole) {
 // What is not implemented is refused, never answered otherwise: a stick rule over a sealed gas
 // chamber is a validation error naming the parameter (the held stage is solved without gas,
 // tests/solver/sphere_stick_test.cpp, and at a held pressure, pressurised_stick_test.cpp), and a
-// held contact past the equator is a status; the
-// finite elements hold the membrane at the flat punch's edge only (held on this probe: they
-// throw; they are checked frictionless in tests/verification/finite_element_sphere_test.cpp).
+// held contact past the equator is a status (the finite elements held on this probe:
+// tests/fe/held_smooth_probe_test.cpp).
 // Friction on the cylinder side is solved (sphere_side_friction_test.cpp).
 TEST(SphereTipped, StickOverASealedChamberIsRefused) {
   Problem held = sphere_problem();
@@ -303,8 +302,6 @@ TEST(SphereTipped, StickOverASealedChamberIsRefused) {
   // of locking): beyond, it would wrap the cylinder.
   const auto locked = shooting.solve(Stage::Stick, 12.0);
   EXPECT_EQ(locked.status, Status::StickWrapsSide) << locked.message;
-
-  EXPECT_THROW(fe_solve_at_depth(sphere_problem(), 5.0, FeContact::Held), InvalidInput);
 }
 
 // Coulomb slip on the hemisphere (docs/model.md, §15): the pressure's and the friction's axial

@@ -198,16 +198,17 @@ TEST(FiniteElementSphereTippedEnergy, ForceIsTheDerivativeOfTheStoredEnergy) {
   }
 }
 
-// The stick stage is the flat punch's only: on the sphere-tipped probe the held contact is
-// invalid input, as is a probe without finite elements.
-TEST(FiniteElementSphereTippedInput, RefusesTheHeldContact) {
-  const Problem p = sphere_problem(2.0, Gent{125.0});
+// Held, the elements follow the membrane where it touched (tests/fe/held_smooth_probe_test.cpp);
+// under a gas pressure they are frictionless only: the held contact is invalid input there.
+TEST(FiniteElementSphereTippedInput, RefusesTheHeldContactUnderPressure) {
+  Problem p = sphere_problem(2.0, Gent{125.0});
+  p.preload.pressure_mpa = 1e-3;
   EXPECT_THROW(fe_solve_at_depth(p, 5.0, FeContact::Held), InvalidInput);
   try {
     fe_solve_at_depth(p, 5.0, FeContact::Held);
   } catch (const InvalidInput& e) {
     ASSERT_FALSE(e.errors().empty());
-    EXPECT_EQ(e.errors().front().parameter, "indenter");
+    EXPECT_EQ(e.errors().front().parameter, "preload.pressure_mpa");
   }
 }
 

@@ -62,8 +62,8 @@ TEST(Verify, PassesOnAPrestretchedMembrane) {
 
 // The sphere-tipped probe: the frictionless limit against the finite elements on its profile
 // (force, pole stretch, contact edge, largest I1 at each depth, and the work), with the user's
-// friction replaced by mu' = 0; no held limit (the elements do not hold the membrane on this probe)
-// and no Foppl rows (the flat punch's disc).
+// friction replaced by mu' = 0; no held rows without the stick rule `always`
+// (tests/fe/held_smooth_probe_test.cpp) and no Foppl rows (the flat punch's disc).
 TEST(Verify, PassesOnTheSphereTippedProbe) {
   VerifyOptions options;
   options.elements = 64;
