@@ -40,24 +40,60 @@ inline constexpr double kDepthPathEnd = 10.0;
 // ~1e-9 of it.
 inline constexpr double kDepthPathForceNoise = 1e-7;
 
-// Where continue_in_depth ends at the contact model's change of configuration (the flat punch's
-// Part II appears, the sphere's contact reaches its side) between `last` and depth `target`: the
-// state at `target` in the new configuration, by Newton in depth control from the change's force
-// and parameter (the new configuration starts where the old one ends, as on the loading curve).
+// The contact model's change of configuration on the sliding path (the flat punch's Part II
+// appears, the sphere's contact reaches its equator) deeper than the path's state `last`, still
+// in the old configuration: the state at the change, in the new configuration.  Searched from
+// last's force up where the contact model can (the sphere: under a gas pressure its search from a
+// small force finds no onset, docs/model.md §17, "Beyond a hemisphere"), else from a small force.
 template <class Shooting>
-std::optional<ScaledSolution> resumed_past_change(const Shooting& shooting,
-                                                  const ScaledSolution& last, double target) {
+std::optional<ScaledSolution> change_past(const Shooting& shooting, const ScaledSolution& last) {
   const auto& contact = shooting.contact();
   const Configuration next = contact.configuration(Stage::Slip, true);
   if (next == last.configuration) return std::nullopt;
-  const auto change = contact.slip_change(shooting);
-  if (!change || !(change->depth > last.depth) || !(change->depth < target)) return std::nullopt;
+  auto change = [&] {
+    if constexpr (requires { contact.slip_change(shooting, last.f); })
+      return contact.slip_change(shooting, last.f);
+    else
+      return contact.slip_change(shooting);
+  }();
+  if (!change || !(change->depth > last.depth)) return std::nullopt;
+  return change;
+}
+
+// The state at normalised depth `target` on the sliding path past the contact's change of
+// configuration between the path's state `last` and `target`, and the state at the change.
+struct PastChange {
+  ScaledSolution change;
+  ScaledSolution state;
+};
+
+// By Newton in depth control from the change's parameter and the force extrapolated from `last`
+// through the change (the new configuration starts where the old one ends, as on the loading
+// curve; from the change's own force the Jacobian's differences would leave the new
+// configuration, whose part past the change has zero length there).
+template <class Shooting>
+std::optional<PastChange> past_change_on_path(const Shooting& shooting, const ScaledSolution& last,
+                                              double target) {
+  auto change = change_past(shooting, last);
+  if (!change || !(change->depth < target)) return std::nullopt;
   const double slope = (change->f - last.f) / (change->depth - last.depth);
   DepthNewton<Shooting> newton(shooting, shooting.settings().shooting_tol, true);
-  auto out =
-      newton.solve(next, target, change->f + slope * (target - change->depth), change->parameter);
+  auto out = newton.solve(change->configuration,
+                          target,
+                          change->f + slope * (target - change->depth),
+                          change->parameter);
   if (!out || !out->ok()) return std::nullopt;
-  return out;
+  return PastChange{std::move(*change), std::move(*out)};
+}
+
+// Where continue_in_depth ends at the contact model's change of configuration between `last` and
+// depth `target`: the state at `target` in the new configuration (past_change_on_path).
+template <class Shooting>
+std::optional<ScaledSolution> resumed_past_change(const Shooting& shooting,
+                                                  const ScaledSolution& last, double target) {
+  auto passed = past_change_on_path(shooting, last, target);
+  if (!passed) return std::nullopt;
+  return std::move(passed->state);
 }
 
 inline constexpr double kSameBranch = 0.05;
