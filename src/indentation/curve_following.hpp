@@ -108,7 +108,9 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
       // stick -> slip switch.
       const double f_seed =
           out.points.size() > 1 ? out.points.back().normalized_force * units.prestretch : 1e-4;
-      const auto seed = shooting.solve(stage, f_seed);
+      // (On a later inflated state, next to its dome: dome_branch_start.)
+      const auto seed = out.points.size() > 1 ? shooting.solve(stage, f_seed)
+                                              : dome_branch_start(shooting, stage);
       if (seed.ok()) {
         predictor.history = {{seed.depth, seed.f, seed.parameter}};
         last_configuration = seed.configuration;
@@ -144,6 +146,9 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
           noisy_near_zero_load<Contact>() ? kNoiseLimitedResidual * curve_tol : 0.0;
       sol = shooting.solve_at_depth(stage, d, f_guess, noise_tol);
     }
+    if (!sol->ok() && stage == Stage::Slip && shooting.settings().dome_later_state &&
+        !(last_sliding && last_sliding->depth < d))
+      if (auto on = dome_branch_at_depth(shooting, stage, d)) sol = std::move(on);
     if (!sol->ok() && stage == Stage::Slip && last_sliding) {
       // Where the searches by force close on another branch's state (near an inflation limit
       // point, docs/model.md §17), depth control from the last point stays on the path.
@@ -232,6 +237,9 @@ SlidingChange sliding_change(const Shooting& shooting, const StageBoundary& boun
                              double big_a) {
   SlidingChange out;
   if (boundary.first_stage != Stage::Slip && !boundary.switches) return out;
+  // On a later inflated state the search from a small force finds the first state's change: the
+  // curve finds its own from its points (follow_curve).
+  if (shooting.settings().dome_later_state) return out;
   out.state = shooting.contact().slip_change(shooting);
   if (!out.state) return out;
   out.depth_mm = out.state->depth * big_a;

@@ -52,6 +52,12 @@ class IndentationShooting {
     if (f == 0.0) return dome_ ? *dome_ : contact_.unloaded(record_unloaded_);
     ScaledSolution sol;
     sol.f = f;
+    if (settings().dome_later_state) {
+      sol.configuration = contact_.configuration(stage, false);
+      sol.status = Status::OutsideModel;
+      sol.message = kLaterStateByForce;
+      return sol;
+    }
     int evals = 0;
     auto counted = [&](Configuration c, double p) {
       ++evals;
@@ -239,6 +245,11 @@ class IndentationShooting {
     const double strain_scale = std::min(1.0, std::pow(f, 2.0 / 3.0));
     return 1e-2 * settings().shooting_tol * strain_scale;
   }
+
+  static constexpr const char* kLaterStateByForce =
+      "a later inflated state beyond a hemisphere is followed in depth control alone, from its "
+      "dome (the puncture along the path): the shooting at a force near zero force finds the "
+      "first state's branch, so no state is solved at a force or by a force search";
 
   static constexpr int kMaxDepthSteps = 100;
   static constexpr int kMaxDepthFailures = 10;
