@@ -87,6 +87,27 @@ std::optional<PastChange> past_change_on_path(const Shooting& shooting, const Sc
   return PastChange{std::move(*change), std::move(*out)};
 }
 
+inline constexpr double kStepPastChange = 1e-3;
+
+// The state at normalised depth d from the path's state `last`, past the contact's change of
+// configuration between them: a step of kStepPastChange of the depth past the change
+// (past_change_on_path: Newton from the change's parameter, which a longer step may not meet),
+// then on in depth control.  Where a force search closes on another
+// branch's state past the change (the sphere's equator on a dome beyond a hemisphere,
+// docs/model.md §17).
+template <class Shooting>
+std::optional<ScaledSolution> reached_past_change(const Shooting& shooting,
+                                                  const ScaledSolution& last, double d) {
+  const auto change = change_past(shooting, last);
+  if (!change || !(change->depth < d)) return std::nullopt;
+  const double first = std::min(d, change->depth * (1.0 + kStepPastChange));
+  auto passed = past_change_on_path(shooting, last, first);
+  if (!passed) return std::nullopt;
+  if (first == d) return std::move(passed->state);
+  ScaledSolution from = std::move(passed->state);
+  return shooting.continue_in_depth(from, d);
+}
+
 // Where continue_in_depth ends at the contact model's change of configuration between `last` and
 // depth `target`: the state at `target` in the new configuration (past_change_on_path).
 template <class Shooting>

@@ -12,6 +12,7 @@
 
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/depth_newton.hpp"
+#include "indentation/depth_path_puncture.hpp"
 #include "indentation/free_part.hpp"
 #include "numerics/shooting.hpp"
 
@@ -326,8 +327,13 @@ class IndentationShooting {
     const bool may_go_on = last_failure.status == Status::Converged ||
                            last_failure.status == Status::NoConvergence ||
                            last_failure.status == Status::LimitLoad;
-    if (deepest && may_go_on)
+    if (deepest && may_go_on) {
       if (auto reached = continue_in_depth(*deepest, d)) return *reached;
+      // Ended by a change of configuration the contact model's search does not find from a
+      // small force (the sphere's equator on a dome beyond a hemisphere): from the deepest state.
+      if (auto reached = reached_past_change(*this, *deepest, d); reached && reached->ok())
+        return *reached;
+    }
     if (!deepest) {
       if (last_failure.status == Status::Converged) last_failure.status = Status::NoConvergence;
       last_failure.message = last_failure.message.empty()
