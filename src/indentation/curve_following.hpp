@@ -167,6 +167,19 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
         newton.reset();
         sol = std::move(passed->state);
       }
+    if (sol->ok() && stage == Stage::Slip && last_sliding && !out.part_two_onset_depth_mm &&
+        sol->configuration != last_sliding->configuration &&
+        sol->configuration == contact.configuration(Stage::Slip, true))
+      if (auto passed = change_past(shooting, *last_sliding); passed && passed->depth < d) {
+        // The point was reached past a change the contact model's search from a small force did
+        // not find (solve_at_depth: from the deepest state short of it): the change is the
+        // curve's, found from the last point.
+        out.part_two_onset_depth_mm = passed->depth * big_a;
+        out.part_two_onset_force_n = passed->f * scale;
+        predictor.history = {{passed->depth, passed->f, passed->parameter}};
+        newton.reset();
+        if (found_change) *found_change = std::move(*passed);
+      }
     if (!sol->ok()) {
       out.status = sol->status;
       out.message =

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "indentation/depth_fold.hpp"
 #include "indentation/depth_newton.hpp"
 #include "indentation/scaled_solution.hpp"
 
@@ -30,6 +31,8 @@ struct DepthPathResult {
   // The last state before the force first falls from one step to the next (a force maximum
   // within one step), if it does before `state`.
   std::optional<ScaledSolution> peak;
+  // Where the states end because the depth turns back (depth_fold.hpp), the located fold.
+  std::optional<DepthFold> fold;
 };
 
 // The steps in normalised depth (/ A): 1 % of the clamp radius, 0.25 mm on the paper's membrane,
@@ -179,13 +182,19 @@ ScaledSolution dome_branch_start(const Shooting& shooting, Stage stage) {
 // The state at normalised depth d on a later inflated state's branch (dome_branch_start), by
 // Newton in depth control: shallower than the branch's first state, from the line through the
 // dome and that state (the force of a pre-tensioned membrane grows about linearly from the pole);
-// deeper, stepped on from it (continue_in_depth).  Empty where Newton fails.
+// deeper, stepped on from it (continue_in_depth), past a change of configuration by
+// reached_past_change.  Empty where Newton fails.
 template <class Shooting>
 std::optional<ScaledSolution> dome_branch_at_depth(const Shooting& shooting, Stage stage,
                                                    double d) {
   ScaledSolution start = dome_branch_start(shooting, stage);
   if (!start.ok() || !(start.depth > 0.0)) return std::nullopt;
-  if (d > start.depth) return shooting.continue_in_depth(start, d);
+  if (d > start.depth) {
+    if (auto out = shooting.continue_in_depth(start, d)) return out;
+    auto out = reached_past_change(shooting, start, d);  // start: the deepest state reached
+    if (!out || !out->ok()) return std::nullopt;
+    return out;
+  }
   const double t = d / start.depth, p0 = shooting.settings().dome_pole_stretch;
   DepthNewton<Shooting> newton(shooting, shooting.settings().shooting_tol, true);
   auto out = newton.solve(start.configuration, d, start.f * t, p0 + (start.parameter - p0) * t);
@@ -229,6 +238,8 @@ DepthPathResult puncture_along_depth(const Shooting& shooting, Excess&& excess) 
     if (!next) next = rejoined_by_force(shooting, last, target);
     if (!next || !next->ok()) {
       out.end = DepthPathEnd::StatesEnd;
+      // Depth control got deeper than `last` (to `from`) in its configuration: a fold there?
+      if (from.depth > last.depth) out.fold = depth_fold_after(shooting, last, from);
       out.state = std::move(last);
       return out;
     }
