@@ -48,17 +48,20 @@ inline constexpr double kDepthPathForceNoise = 1e-7;
 // appears, the sphere's contact reaches its equator) deeper than the path's state `last`, still
 // in the old configuration: the state at the change, in the new configuration.  Searched from
 // last's force up where the contact model can (the sphere: under a gas pressure its search from a
-// small force finds no onset, docs/model.md §17, "Beyond a hemisphere"), else from a small force.
+// small force finds no onset, docs/model.md §17, "Beyond a hemisphere"), and where that finds
+// none from a small force (the search that found every change before), except on a later
+// inflated state (whose search from a small force finds the first state's change).
 template <class Shooting>
 std::optional<ScaledSolution> change_past(const Shooting& shooting, const ScaledSolution& last) {
   const auto& contact = shooting.contact();
   const Configuration next = contact.configuration(Stage::Slip, true);
   if (next == last.configuration) return std::nullopt;
   auto change = [&] {
-    if constexpr (requires { contact.slip_change(shooting, last.f); })
-      return contact.slip_change(shooting, last.f);
-    else
-      return contact.slip_change(shooting);
+    if constexpr (requires { contact.slip_change(shooting, last.f); }) {
+      auto from_path = contact.slip_change(shooting, last.f);
+      if (from_path || shooting.settings().dome_later_state) return from_path;
+    }
+    return contact.slip_change(shooting);
   }();
   if (!change || !(change->depth > last.depth)) return std::nullopt;
   return change;
@@ -82,7 +85,8 @@ std::optional<PastChange> past_change_on_path(const Shooting& shooting, const Sc
   if (!change || !(change->depth < target)) return std::nullopt;
   const double slope = (change->f - last.f) / (change->depth - last.depth);
   DepthNewton<Shooting> newton(shooting, shooting.settings().shooting_tol, true);
-  auto out = newton.solve(change->configuration,
+  // (The flat punch's change is assembled without Part II, of zero length there.)
+  auto out = newton.solve(shooting.contact().configuration(Stage::Slip, true),
                           target,
                           change->f + slope * (target - change->depth),
                           change->parameter);
