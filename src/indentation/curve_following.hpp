@@ -308,9 +308,28 @@ void add_energy_to_puncture(const Problem& p, const Shooting& shooting, double c
     puncture.energy_to_puncture_mj = 0.0;
     return;
   }
-  if (!follow_curve(
-          p, shooting, curve_tol, boundary, end, has_switch, change.state, at_nodes, path)) {
+  std::optional<ScaledSolution> found;
+  if (!follow_curve(p,
+                    shooting,
+                    curve_tol,
+                    boundary,
+                    end,
+                    has_switch,
+                    change.state,
+                    at_nodes,
+                    path,
+                    &found)) {
     note(path.message);
+    return;
+  }
+  // The path changed configuration where the contact model's search found no change (under a
+  // gas pressure, follow_curve): again with the pieces meeting there, as the curve's energy.
+  if (found && !change.state && found->depth * solver_scales(p).length_mm < end) {
+    SlidingChange at_found = change;
+    at_found.depth_mm = found->depth * solver_scales(p).length_mm;
+    at_found.state = std::move(found);
+    add_energy_to_puncture(
+        p, shooting, curve_tol, boundary, at_found, puncture_at_switch, puncture, panels);
     return;
   }
   // The driver adds both states at the switch depth, which no node is: the nodes' points are
