@@ -273,8 +273,8 @@ class IndentationShooting {
     if (settings().dome_later_state) {  // no force search there: from the dome in depth control
       if (auto on_branch = dome_branch_at_depth(*this, stage, d)) return std::move(*on_branch);
       ScaledSolution out = solve(stage, 1.0);  // the refusal, with its status and message
-      out.message = "the requested depth cannot be reached in depth control from the dome: " +
-                    out.message;
+      out.message =
+          "the requested depth cannot be reached in depth control from the dome: " + out.message;
       return out;
     }
     if (auto fast = newton_at_depth(stage, d, f_guess, noise_tol)) return std::move(*fast);
