@@ -67,11 +67,13 @@ constexpr bool noisy_near_zero_load() {
 
 // Fills out.points along the depth grid; false (with out.status/message) on failure.
 // `change`: where the sliding configuration changes (the contact model's slip_change), if it does.
+// Where that search found none and a point fails past a change, the change is found from the
+// last point (past_change_on_path), set as the curve's onset and put in `found_change`.
 template <class Shooting>
 bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
                   const StageBoundary& boundary, double end_depth, bool has_switch,
                   const std::optional<ScaledSolution>& change, const CurveOptions& curve,
-                  LoadingCurve& out) {
+                  LoadingCurve& out, std::optional<ScaledSolution>* found_change = nullptr) {
   const SolverScales units = solver_scales(p);
   const double scale = units.force_n;
   const double big_a = units.length_mm;
@@ -81,7 +83,8 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
   Predictor predictor;
   Stage segment_stage = boundary.first_stage;
   Configuration last_configuration = Configuration::Unloaded;
-  std::optional<double> last_contact_q;  // the last point's contact quantity (DepthControl)
+  std::optional<double> last_contact_q;        // the last point's contact quantity (DepthControl)
+  std::optional<ScaledSolution> last_sliding;  // the last point's state, on the sliding branch
   auto stage_at = [&](double depth) {
     if (boundary.first_stage == Stage::Slip) return Stage::Slip;
     if (!boundary.switches || depth <= boundary.depth_mm) return Stage::Stick;
@@ -105,7 +108,9 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
       // stick -> slip switch.
       const double f_seed =
           out.points.size() > 1 ? out.points.back().normalized_force * units.prestretch : 1e-4;
-      const auto seed = shooting.solve(stage, f_seed);
+      // (On a later inflated state, next to its dome: dome_branch_start.)
+      const auto seed = out.points.size() > 1 ? shooting.solve(stage, f_seed)
+                                              : dome_branch_start(shooting, stage);
       if (seed.ok()) {
         predictor.history = {{seed.depth, seed.f, seed.parameter}};
         last_configuration = seed.configuration;
@@ -141,6 +146,40 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
           noisy_near_zero_load<Contact>() ? kNoiseLimitedResidual * curve_tol : 0.0;
       sol = shooting.solve_at_depth(stage, d, f_guess, noise_tol);
     }
+    if (!sol->ok() && stage == Stage::Slip && shooting.settings().dome_later_state &&
+        !(last_sliding && last_sliding->depth < d))
+      if (auto on = dome_branch_at_depth(shooting, stage, d)) sol = std::move(on);
+    if (!sol->ok() && stage == Stage::Slip && last_sliding) {
+      // Where the searches by force close on another branch's state (near an inflation limit
+      // point, docs/model.md §17), depth control from the last point stays on the path.
+      ScaledSolution from = *last_sliding;
+      if (auto on = shooting.continue_in_depth(from, d); on && on->ok()) sol = std::move(on);
+    }
+    if (!sol->ok() && stage == Stage::Slip && last_sliding && !out.part_two_onset_depth_mm)
+      if (auto passed = past_change_on_path(shooting, *last_sliding, d)) {
+        // The contact changed its configuration between the last point and this one where the
+        // contact model's own search for the change found none (the sphere's equator on a dome
+        // beyond a hemisphere, docs/model.md §17): found from the last point, it is the curve's.
+        out.part_two_onset_depth_mm = passed->change.depth * big_a;
+        out.part_two_onset_force_n = passed->change.f * scale;
+        if (found_change) *found_change = passed->change;
+        predictor.history = {{passed->change.depth, passed->change.f, passed->change.parameter}};
+        newton.reset();
+        sol = std::move(passed->state);
+      }
+    if (sol->ok() && stage == Stage::Slip && last_sliding && !out.part_two_onset_depth_mm &&
+        sol->configuration != last_sliding->configuration &&
+        sol->configuration == contact.configuration(Stage::Slip, true))
+      if (auto passed = change_past(shooting, *last_sliding); passed && passed->depth < d) {
+        // The point was reached past a change the contact model's search from a small force did
+        // not find (solve_at_depth: from the deepest state short of it): the change is the
+        // curve's, found from the last point.
+        out.part_two_onset_depth_mm = passed->depth * big_a;
+        out.part_two_onset_force_n = passed->f * scale;
+        predictor.history = {{passed->depth, passed->f, passed->parameter}};
+        newton.reset();
+        if (found_change) *found_change = std::move(*passed);
+      }
     if (!sol->ok()) {
       out.status = sol->status;
       out.message =
@@ -150,6 +189,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     if (sol->configuration != Configuration::Unloaded)
       predictor.history.push_back({d, sol->f, sol->parameter});
     last_configuration = sol->configuration;
+    if (stage == Stage::Slip) last_sliding = *sol;
     last_contact_q.reset();
     if (shooting.control_of(sol->configuration) == DepthControl::Contact)
       last_contact_q = depth_unknown(DepthControl::Contact, *sol);
@@ -210,6 +250,9 @@ SlidingChange sliding_change(const Shooting& shooting, const StageBoundary& boun
                              double big_a) {
   SlidingChange out;
   if (boundary.first_stage != Stage::Slip && !boundary.switches) return out;
+  // On a later inflated state the search from a small force finds the first state's change: the
+  // curve finds its own from its points (follow_curve).
+  if (shooting.settings().dome_later_state) return out;
   out.state = shooting.contact().slip_change(shooting);
   if (!out.state) return out;
   out.depth_mm = out.state->depth * big_a;
@@ -265,9 +308,28 @@ void add_energy_to_puncture(const Problem& p, const Shooting& shooting, double c
     puncture.energy_to_puncture_mj = 0.0;
     return;
   }
-  if (!follow_curve(
-          p, shooting, curve_tol, boundary, end, has_switch, change.state, at_nodes, path)) {
+  std::optional<ScaledSolution> found;
+  if (!follow_curve(p,
+                    shooting,
+                    curve_tol,
+                    boundary,
+                    end,
+                    has_switch,
+                    change.state,
+                    at_nodes,
+                    path,
+                    &found)) {
     note(path.message);
+    return;
+  }
+  // The path changed configuration where the contact model's search found no change (under a
+  // gas pressure, follow_curve): again with the pieces meeting there, as the curve's energy.
+  if (found && !change.state && found->depth * solver_scales(p).length_mm < end) {
+    SlidingChange at_found = change;
+    at_found.depth_mm = found->depth * solver_scales(p).length_mm;
+    at_found.state = std::move(found);
+    add_energy_to_puncture(
+        p, shooting, curve_tol, boundary, at_found, puncture_at_switch, puncture, panels);
     return;
   }
   // The driver adds both states at the switch depth, which no node is: the nodes' points are
@@ -323,11 +385,12 @@ LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
     out.stick_slip.depth_mm = boundary.depth_mm;
     out.stick_slip.force_stuck_n = boundary.force_stuck_n;
   }
-  const SlidingChange change = sliding_change(shooting, boundary, big_a);
+  SlidingChange change = sliding_change(shooting, boundary, big_a);
   out.part_two_onset_depth_mm = change.depth_mm;
   out.part_two_onset_at_switch = change.at_switch;
   // At the switch: the sliding force there, set below.
   if (change.state) out.part_two_onset_force_n = change.state->f * scale;
+  std::optional<ScaledSolution> found_change;
   if (!follow_curve(p,
                     shooting,
                     options.curve_tol,
@@ -336,8 +399,13 @@ LoadingCurve curve_to_puncture(const Problem& p, const Shooting& shooting,
                     has_switch,
                     change.state,
                     curve,
-                    out))
+                    out,
+                    &found_change))
     return out;
+  if (found_change) {  // found along the path: the energy's pieces end there too
+    change.depth_mm = found_change->depth * big_a;
+    change.state = std::move(found_change);
+  }
   if (options.energy_to_puncture && out.puncture.ok())
     add_energy_to_puncture(
         p, shooting, options.curve_tol, boundary, change, puncture_at_switch, out.puncture);

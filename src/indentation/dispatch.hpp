@@ -88,6 +88,7 @@ decltype(auto) with_shooting(const Problem& problem, const SolverOptions& option
     settings.dome_height = dome->height;
     settings.dome_pole_stretch = dome->state.part_three_stretch;
     settings.dome_overhangs = overhangs_clamp(*dome);
+    settings.dome_later_state = dome->later_state;
     dome_state = std::move(dome->state);
   }
   const RuntimeLaw law(problem.material.law);

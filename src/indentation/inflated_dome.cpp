@@ -119,21 +119,11 @@ std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOp
                     p_mpa,
                     dome.max_i1,
                     problem.critical_i1));
+  InflatedDome out;
   // A later state overhanging its clamp (every later state of the membranes tried): the force
   // searches near zero force close on the first state's branch, whose states lie at positive
-  // depths below that higher pole (docs/model.md §17): not indented.
-  if (chosen != 1 && !(dome.clamp_slope < boost::math::constants::half_pi<double>()))
-    throw PhysicalFailure(
-        Status::OutsideModel,
-        fmt::format(
-            "at {:g} MPa the inflated membrane overhangs its clamp (slope {:.4g} rad at the "
-            "clamp): indenting a later inflated state beyond a hemisphere is not modelled "
-            "(the chosen inflated state, pole stretch {:.8g}; the solver's states near "
-            "zero force lie on the first state's branch)",
-            p_mpa,
-            dome.clamp_slope,
-            dome.pole_stretch));
-  InflatedDome out;
+  // depths below that higher pole (docs/model.md §17): followed in depth control alone.
+  out.later_state = chosen != 1 && !(dome.clamp_slope < boost::math::constants::half_pi<double>());
   out.pressure = dome_pressure(problem);
   out.height = dome.pole_height;
   out.clamp_slope = dome.clamp_slope;

@@ -14,15 +14,18 @@ struct InflatedDome {
   double pressure = 0.0;     // P = p (A / L0) / (G H)
   double height = 0.0;       // the pole's height above the clamp, / (A / L0)
   double clamp_slope = 0.0;  // the meridian's slope at the clamp [rad]: past pi/2 it overhangs
-  ScaledSolution state;      // Unloaded, all of it Part I from the pole to the clamp
+  // A later state than the first (Preload::inflated_state) that overhangs its clamp: followed in
+  // depth control alone (ShootingSettings::dome_later_state).
+  bool later_state = false;
+  ScaledSolution state;  // Unloaded, all of it Part I from the pole to the clamp
 };
 
 // The inflated state at the problem's pressure that Preload::inflated_state chooses (the first,
 // reached by inflating slowly from flat, by default); empty without pressure.  Throws
 // PhysicalFailure (reported_failure.hpp) when no inflated state holds the pressure (it bursts or
 // snaps through before contact).  The first state beyond a hemisphere (overhanging its clamp) is
-// indented as it stands at a held pressure (docs/model.md §17); a later one that overhangs throws
-// PhysicalFailure (OutsideModel).
+// indented as it stands at a held pressure (docs/model.md §17); so is a later one that overhangs,
+// in depth control alone (InflatedDome::later_state).
 std::optional<InflatedDome> inflated_dome(const Problem& problem, const SolverOptions& options);
 
 // Whether the dome's meridian overhangs its clamp (slope at the clamp >= pi/2).

@@ -379,6 +379,23 @@ PuncturePrediction puncture_followed_in_depth(const Problem& p, const SolverOpti
       measure,
       critical_value(criterion),
       kDepthPathStep * units.length_mm);
+  if (path.fold && !path.peak) {
+    const ScaledSolution& turn = path.fold->state;
+    out.status = Status::LimitLoad;
+    out.message = fmt::format(
+        "no puncture found on the loading path: followed in depth, the depth turns back at {:.8g} "
+        "mm (within {:.2g} mm; {:.6g} N, the {} {:.6g}, critical {:g}): a fold of the path, where "
+        "under depth control the membrane snaps through (its force drops at that depth) before "
+        "the criterion is met; the branch beyond the fold is not followed ({})",
+        turn.depth * units.length_mm,
+        path.fold->depth_uncertainty * units.length_mm,
+        turn.f * units.force_n,
+        largest_measure(criterion),
+        excess(turn) + critical_value(criterion),
+        critical_value(criterion),
+        out.message);
+    return out;
+  }
   if (path.peak) {
     out.status = Status::LimitLoad;
     out.message = fmt::format(

@@ -36,6 +36,11 @@ struct ShootingSettings {
   // Whether that dome overhangs its clamp (beyond a hemisphere): the puncture is then searched
   // along the path in depth alone (puncture_search.hpp).
   bool dome_overhangs = false;
+  // Whether that dome is a later inflated state than the first (Preload::inflated_state), which
+  // overhangs: the shooting at a force then refuses (OutsideModel), its searches near zero force
+  // finding the first state's branch, and the states are followed in depth control from the dome
+  // (depth_path_puncture.hpp: dome_branch_start).
+  bool dome_later_state = false;
 };
 
 // Part I sample: R, t, lambda1, lambda2, h.  Part II sample: R, lambda1, y.

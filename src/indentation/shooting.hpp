@@ -12,6 +12,7 @@
 
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/depth_newton.hpp"
+#include "indentation/depth_path_puncture.hpp"
 #include "indentation/free_part.hpp"
 #include "numerics/shooting.hpp"
 
@@ -52,6 +53,12 @@ class IndentationShooting {
     if (f == 0.0) return dome_ ? *dome_ : contact_.unloaded(record_unloaded_);
     ScaledSolution sol;
     sol.f = f;
+    if (settings().dome_later_state) {
+      sol.configuration = contact_.configuration(stage, false);
+      sol.status = Status::OutsideModel;
+      sol.message = kLaterStateByForce;
+      return sol;
+    }
     int evals = 0;
     auto counted = [&](Configuration c, double p) {
       ++evals;
@@ -240,6 +247,11 @@ class IndentationShooting {
     return 1e-2 * settings().shooting_tol * strain_scale;
   }
 
+  static constexpr const char* kLaterStateByForce =
+      "a later inflated state beyond a hemisphere is followed in depth control alone, from its "
+      "dome (the puncture along the path): the shooting at a force near zero force finds the "
+      "first state's branch, so no state is solved at a force or by a force search";
+
   static constexpr int kMaxDepthSteps = 100;
   static constexpr int kMaxDepthFailures = 10;
   static constexpr double kFirstDepthStep = 0.05;
@@ -258,6 +270,13 @@ class IndentationShooting {
   ScaledSolution solve_at_depth(Stage stage, double d, double f_guess = 0.0,
                                 double noise_tol = 0.0) const {
     if (d == 0.0) return solve(stage, 0.0);
+    if (settings().dome_later_state) {  // no force search there: from the dome in depth control
+      if (auto on_branch = dome_branch_at_depth(*this, stage, d)) return std::move(*on_branch);
+      ScaledSolution out = solve(stage, 1.0);  // the refusal, with its status and message
+      out.message =
+          "the requested depth cannot be reached in depth control from the dome: " + out.message;
+      return out;
+    }
     if (auto fast = newton_at_depth(stage, d, f_guess, noise_tol)) return std::move(*fast);
     ScaledSolution last_failure;
     std::optional<ScaledSolution> deepest;  // the deepest state short of d the search met
@@ -315,8 +334,13 @@ class IndentationShooting {
     const bool may_go_on = last_failure.status == Status::Converged ||
                            last_failure.status == Status::NoConvergence ||
                            last_failure.status == Status::LimitLoad;
-    if (deepest && may_go_on)
+    if (deepest && may_go_on) {
       if (auto reached = continue_in_depth(*deepest, d)) return *reached;
+      // Ended by a change of configuration the contact model's search does not find from a
+      // small force (the sphere's equator on a dome beyond a hemisphere): from the deepest state.
+      if (auto reached = reached_past_change(*this, *deepest, d); reached && reached->ok())
+        return *reached;
+    }
     if (!deepest) {
       if (last_failure.status == Status::Converged) last_failure.status = Status::NoConvergence;
       last_failure.message = last_failure.message.empty()

@@ -138,11 +138,12 @@ ShootingPlan bracket_from_below(Residual& counted, Configuration configuration, 
 
 // The force at which a contact changes configuration (slip_change): the first root of an
 // onset indicator, negative at small forces, found by bracketing upward from a force far below
-// any onset (1e-4 of the force scale) with the given relative step.  Empty when the indicator is
-// not negative there or no root is bracketed.
+// any onset (1e-4 of the force scale, or `f_probe`: a loading path's last state before the
+// change) with the given step.  Empty when the indicator is not negative there or no root is
+// bracketed.
 template <class Indicator>
-std::optional<double> onset_force(Indicator&& indicator, int max_iterations, double step) {
-  const double f_probe = 1e-4;
+std::optional<double> onset_force(Indicator&& indicator, int max_iterations, double step,
+                                  double f_probe = 1e-4) {
   const auto g0 = indicator(f_probe);
   if (!g0 || *g0 >= 0.0) return std::nullopt;
   return shoot_increasing(

@@ -429,14 +429,18 @@ class FlatPunchContact {
   }
 
   // The state where Part II appears in the slip stage (Part II of zero length); empty if it
-  // never appears before the material locks.
+  // never appears before the material locks.  Searched from a small force up, or from `f_from`
+  // up: the force of a state on the loading path before the onset (on a later inflated state the
+  // search from a small force finds the first state's onset, docs/model.md §17).
   template <class Shooting>
-  std::optional<ScaledSolution> slip_change(const Shooting& shooting) const {
+  std::optional<ScaledSolution> slip_change(const Shooting& shooting, double f_from = 0.0) const {
     // The indicator rises through zero at the onset force.  Below it, Part I leaving the corner
     // vertically turns back towards the axis (indicator kTurnedBack), so the sign change is found
     // by bracketing, starting from a force far below any onset.
-    const auto f_on = onset_force(
-        [&](double f) { return part_two_indicator(f); }, part_one_.settings().max_iterations, 0.05);
+    const auto indicator = [&](double f) { return part_two_indicator(f); };
+    const int iterations = part_one_.settings().max_iterations;
+    const auto f_on = f_from > 0.0 ? onset_force(indicator, iterations, 0.01 * f_from, f_from)
+                                   : onset_force(indicator, iterations, 0.05);
     if (!f_on) return std::nullopt;
     const auto onset = part_two_onset_stretch(*f_on);
     if (!onset) return std::nullopt;

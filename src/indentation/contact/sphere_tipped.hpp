@@ -768,16 +768,23 @@ class SphereTippedContact {
 
   // The state where the contact reaches the equator (the side of zero length), as the
   // configuration with the side: its parameter is the equator's lambda2.  Empty if it never does
-  // before the material locks.
+  // before the material locks.  Searched from a small force up, or from `f_from` up: the force of
+  // a state on the loading path short of the equator.  (Under a gas pressure no onset exists
+  // below the gas's share P a^2 / 2 at the equator, 0.0028 N for a = 2 mm at 0.9 kPa, so the
+  // search from a small force finds none: the depth path starts from its own last state,
+  // docs/model.md §17, "Beyond a hemisphere".)
   template <class Shooting>
-  std::optional<ScaledSolution> slip_change(const Shooting& shooting) const {
+  std::optional<ScaledSolution> slip_change(const Shooting& shooting, double f_from = 0.0) const {
     if (s_.beyond != BeyondTipSphere::CylinderSide) return std::nullopt;  // a status past it
     auto indicator = [&](double f) -> std::optional<double> {
       const auto onset = equator_onset(f);
       if (!onset) return std::nullopt;
       return side_indicator(f, *onset);
     };
-    const auto f_on = onset_force(indicator, part_one_.settings().max_iterations, 0.01);
+    const int iterations = part_one_.settings().max_iterations;
+    const auto f_on = f_from > 0.0
+                          ? onset_force(indicator, iterations, kOnsetStepFromPath * f_from, f_from)
+                          : onset_force(indicator, iterations, 0.01);
     if (!f_on) return std::nullopt;
     const auto onset = equator_onset(*f_on);
     if (!onset) return std::nullopt;
@@ -1171,6 +1178,9 @@ class SphereTippedContact {
   static constexpr int kFacePoints = 4;  // samples of the uniform flat face, pole included
   static constexpr double kEndResidualMargin = 1e-5;
   static constexpr double kOnsetMatch = 1e-8;  // an equator onset's pull against f (relative)
+  // The first step of the onset's search from a loading path's state (relative to its force): a
+  // step of the path (0.01 A in depth) moves the force by ~1 % near the equator.
+  static constexpr double kOnsetStepFromPath = 0.01;
 
   bool cone() const { return s_.beyond == BeyondTipSphere::Cone; }
   // The filleted punch's face under a gas pressure (fillet_face_under_gas.hpp).
