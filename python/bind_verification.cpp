@@ -26,7 +26,10 @@ std::optional<double> number_of(const VerificationCheck& c, double value) {
 void bind_verification(py::module_& m) {
   py::enum_<FeContact>(m, "FeContact", "Contact the finite elements model")
       .value("Frictionless", FeContact::Frictionless, "sliding freely over tip, corner and side")
-      .value("Held", FeContact::Held, "held: at the flat punch's edge, or on a smooth probe where the membrane touched (the stick stage)");
+      .value("Held",
+             FeContact::Held,
+             "held: at the flat punch's edge, or on a smooth probe where the membrane touched (the "
+             "stick stage)");
   py::enum_<Verdict>(m, "Verdict")
       .value("Pass", Verdict::Pass)
       .value("Fail", Verdict::Fail)

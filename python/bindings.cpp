@@ -3,7 +3,8 @@
 
 PYBIND11_MODULE(_puncture, m) {
   m.doc() =
-      "Membrane puncture by a rigid probe (flat punch, sphere-tipped, ball, cone): the C++ solver.  Units: mm, N, "
+      "Membrane puncture by a rigid probe (flat punch, sphere-tipped, ball, cone): the C++ "
+      "solver.  Units: mm, N, "
       "MPa.  Use the package `puncture`, which re-exports everything here.";
   m.attr("__version__") = PUNCTURE_VERSION;
   puncture::python::bind_enums(m);
