@@ -78,6 +78,9 @@ std::string summary_text(const StateReport& r) {
 
 std::string summary_text(const VerifyReport& r) {
   const VerificationReport& v = r.verification;
+  // A smooth profile (sphere-tipped, ball, cone, a filleted flat punch): the elements lie on it.
+  const auto* punch = std::get_if<FlatPunch>(&r.problem.indenter);
+  const bool smooth_probe = !punch || punch->fillet_radius_mm > 0.0;
   std::string out = full_report(r.problem);
   if (r.problem.preload.pressure_mpa > 0.0)
     out += fmt::format(
@@ -92,7 +95,7 @@ std::string summary_text(const VerifyReport& r) {
         v.elements,
         v.elements / 2,
         num(r.problem.friction, "friction"));
-  else if (std::holds_alternative<SphereTipped>(r.problem.indenter))
+  else if (smooth_probe)
     out += fmt::format(
         "Verification: the shooting solver against independent methods\n"
         "  second method: finite elements, {} quadratic elements along the free part (and {}\n"

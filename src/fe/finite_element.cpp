@@ -507,14 +507,7 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
       }
     }
     if (!failure.empty()) {
-      FeState failed;
-      failed.contact = contact;
-      failed.depth_mm = target_mm;
-      failed.message = failure;
-      for (std::size_t k = states.size(); k < depths_mm.size(); ++k) {
-        failed.depth_mm = depths_mm[k];
-        states.push_back(failed);
-      }
+      fe::fill_unreached_depths(states, depths_mm, contact, FeState{}.status, failure);
       return states;
     }
     states.push_back(*previous);

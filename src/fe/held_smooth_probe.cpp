@@ -20,6 +20,7 @@
 #include "fe/energy_newton.hpp"
 #include "fe/meridian_mesh.hpp"
 #include "fe/part_evaluation.hpp"
+#include "fe/smooth_probe.hpp"
 
 namespace puncture::fe {
 namespace {
@@ -442,14 +443,7 @@ std::vector<FeState> solve_held_smooth_probe(const Problem& problem, const Rigid
       }
     }
     if (!failure.empty()) {
-      FeState failed;
-      failed.contact = FeContact::Held;
-      failed.status = failure_status;
-      failed.message = failure;
-      for (std::size_t k = states.size(); k < depths_mm.size(); ++k) {
-        failed.depth_mm = depths_mm[k];
-        states.push_back(failed);
-      }
+      fill_unreached_depths(states, depths_mm, FeContact::Held, failure_status, failure);
       return states;
     }
     states.push_back(held_state(problem, layout, profile, current));

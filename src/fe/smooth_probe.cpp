@@ -611,14 +611,7 @@ std::vector<FeState> solve_smooth_probe(const Problem& problem, const RigidProfi
       }
     }
     if (!failure.empty()) {
-      FeState failed;
-      failed.contact = FeContact::Frictionless;
-      failed.status = failure_status;
-      failed.message = failure;
-      for (std::size_t k = states.size(); k < depths_mm.size(); ++k) {
-        failed.depth_mm = depths_mm[k];
-        states.push_back(failed);
-      }
+      fill_unreached_depths(states, depths_mm, FeContact::Frictionless, failure_status, failure);
       return states;
     }
     states.push_back(*previous);

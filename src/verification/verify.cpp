@@ -121,6 +121,21 @@ VerificationCheck skipped(std::string group, std::string quantity, std::string c
                            std::move(why)};
 }
 
+// The shooting found an equilibrium the second method cannot reach: a disagreement, not a skip.
+VerificationCheck finite_elements_missing(const std::string& group, const std::string& where,
+                                          const Equilibrium& e, const FeState& fine,
+                                          const FeState& coarse) {
+  VerificationCheck c = skipped(group,
+                                "force [N]",
+                                where,
+                                "no finite-element equilibrium here, where the shooting has one: " +
+                                    (fine.ok() ? coarse.message : fine.message));
+  c.verdict = Verdict::Fail;
+  c.shooting = e.force_n;
+  c.reference = std::numeric_limits<double>::quiet_NaN();
+  return c;
+}
+
 // The finite elements' own relative error, estimated from the half mesh for a quantity
 // converging at order `order`: |fine - coarse| / (2^order - 1) / |fine|.
 double estimated_error(double fine, double coarse, int order) {
@@ -142,30 +157,53 @@ class Checks {
   int done_ = 0;
 };
 
+// The finite elements on the fine and the half mesh at `options.depths` depths evenly spaced to
+// the (`kind`) puncture depth, or to the loading curve's last depth where it ends first; nothing
+// (a skipped row added) where there is no loading curve.
+struct FeOverRange {
+  std::vector<double> depths;
+  std::vector<FeState> fine, coarse;
+  std::string range_note;  // what the depths are fractions of
+  FeOptions fine_options;
+};
+
+std::optional<FeOverRange> fe_over_range(const Problem& q, FeContact contact,
+                                         const std::string& group, const std::string& kind,
+                                         const VerifyOptions& options, Checks& checks) {
+  checks.step(fmt::format("{}: the depth range", group));
+  std::string why;
+  const std::optional<double> range = depth_range(q, why);
+  if (!range) {
+    checks.rows.push_back(
+        skipped(group, "force [N]", "", fmt::format("no {}loading curve: {}", kind, why)));
+    return std::nullopt;
+  }
+  FeOverRange run;
+  for (int k = 1; k <= options.depths; ++k) run.depths.push_back(*range * k / options.depths);
+  FeOptions coarse;
+  run.fine_options.elements = options.elements;
+  coarse.elements = std::max(2, options.elements / 2);
+  checks.step(fmt::format("{}: finite elements, {} elements", group, options.elements));
+  run.fine = fe_solve_at_depths(q, run.depths, contact, run.fine_options);
+  checks.step(fmt::format("{}: finite elements, {} elements", group, coarse.elements));
+  run.coarse = fe_solve_at_depths(q, run.depths, contact, coarse);
+  run.range_note = why.empty() ? fmt::format("of the {}puncture depth", kind)
+                               : fmt::format("of the {}loading curve's last depth", kind);
+  return run;
+}
+
 // Force, Part III stretch and largest I1 against the finite elements, and the work of the
 // shooting's force against the finite elements' stored energy, in one limit.
 void compare_limit(const Problem& problem, FeContact contact, const VerifyOptions& options,
                    Checks& checks) {
   const Problem q = limit_problem(problem, contact);
   const std::string group = group_of(contact);
-  checks.step(fmt::format("{}: the depth range", group));
-  std::string why;
-  const std::optional<double> range = depth_range(q, why);
-  if (!range) {
-    checks.rows.push_back(skipped(group, "force [N]", "", "no loading curve: " + why));
-    return;
-  }
-  std::vector<double> depths;
-  for (int k = 1; k <= options.depths; ++k) depths.push_back(*range * k / options.depths);
-  FeOptions fine, coarse;
-  fine.elements = options.elements;
-  coarse.elements = std::max(2, options.elements / 2);
-  checks.step(fmt::format("{}: finite elements, {} elements", group, fine.elements));
-  const std::vector<FeState> fe = fe_solve_at_depths(q, depths, contact, fine);
-  checks.step(fmt::format("{}: finite elements, {} elements", group, coarse.elements));
-  const std::vector<FeState> fe_coarse = fe_solve_at_depths(q, depths, contact, coarse);
-  const std::string range_note =
-      why.empty() ? "of the puncture depth" : "of the loading curve's last depth";
+  const std::optional<FeOverRange> run = fe_over_range(q, contact, group, "", options, checks);
+  if (!run) return;
+  const auto& depths = run->depths;
+  const auto& fe = run->fine;
+  const auto& fe_coarse = run->coarse;
+  const auto& range_note = run->range_note;
   for (std::size_t k = 0; k < depths.size(); ++k) {
     const std::string where =
         fmt::format("depth {:.5g} mm ({}/{} {})", depths[k], k + 1, options.depths, range_note);
@@ -175,17 +213,7 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
       continue;
     }
     if (!fe[k].ok() || !fe_coarse[k].ok()) {
-      // The shooting found an equilibrium the second method cannot reach: a disagreement.
-      VerificationCheck c =
-          skipped(group,
-                  "force [N]",
-                  where,
-                  "no finite-element equilibrium here, where the shooting has one: " +
-                      (fe[k].ok() ? fe_coarse[k].message : fe[k].message));
-      c.verdict = Verdict::Fail;
-      c.shooting = e.force_n;
-      c.reference = std::numeric_limits<double>::quiet_NaN();
-      checks.rows.push_back(c);
+      checks.rows.push_back(finite_elements_missing(group, where, e, fe[k], fe_coarse[k]));
       continue;
     }
     if (sealed(q) && e.gas) {
@@ -358,24 +386,14 @@ void compare_held_smooth_probe(const Problem& problem, const VerifyOptions& opti
                                Checks& checks) {
   const Problem q = limit_problem(problem, FeContact::Held);
   const std::string group = "held where it touched";
-  checks.step(fmt::format("{}: the depth range", group));
-  std::string why;
-  const std::optional<double> range = depth_range(q, why);
-  if (!range) {
-    checks.rows.push_back(skipped(group, "force [N]", "", "no held loading curve: " + why));
-    return;
-  }
-  std::vector<double> depths;
-  for (int k = 1; k <= options.depths; ++k) depths.push_back(*range * k / options.depths);
-  FeOptions fine, coarse;
-  fine.elements = options.elements;
-  coarse.elements = std::max(2, options.elements / 2);
-  checks.step(fmt::format("{}: finite elements, {} elements", group, fine.elements));
-  const std::vector<FeState> fe = fe_solve_at_depths(q, depths, FeContact::Held, fine);
-  checks.step(fmt::format("{}: finite elements, {} elements", group, coarse.elements));
-  const std::vector<FeState> fe_coarse = fe_solve_at_depths(q, depths, FeContact::Held, coarse);
-  const std::string range_note =
-      why.empty() ? "of the held puncture depth" : "of the held loading curve's last depth";
+  const std::optional<FeOverRange> run =
+      fe_over_range(q, FeContact::Held, group, "held ", options, checks);
+  if (!run) return;
+  const auto& depths = run->depths;
+  const auto& fe = run->fine;
+  const auto& fe_coarse = run->coarse;
+  const auto& range_note = run->range_note;
+  const FeOptions& fine = run->fine_options;
   const double envelope = 2.5e-3 * 64.0 / fine.elements;
   for (std::size_t k = 0; k < depths.size(); ++k) {
     const std::string where =
@@ -386,16 +404,7 @@ void compare_held_smooth_probe(const Problem& problem, const VerifyOptions& opti
       continue;
     }
     if (!fe[k].ok() || !fe_coarse[k].ok()) {
-      VerificationCheck c =
-          skipped(group,
-                  "force [N]",
-                  where,
-                  "no finite-element equilibrium here, where the shooting has one: " +
-                      (fe[k].ok() ? fe_coarse[k].message : fe[k].message));
-      c.verdict = Verdict::Fail;
-      c.shooting = e.force_n;
-      c.reference = std::numeric_limits<double>::quiet_NaN();
-      checks.rows.push_back(c);
+      checks.rows.push_back(finite_elements_missing(group, where, e, fe[k], fe_coarse[k]));
       continue;
     }
     const double force_error = estimated_error(fe[k].force_n, fe_coarse[k].force_n, 2);
