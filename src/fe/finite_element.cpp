@@ -97,14 +97,6 @@ double node_radius(bool logarithmic, int intervals, int i, double start, double 
   return logarithmic ? start * std::pow(end / start, xi) : start + xi * (end - start);
 }
 
-// Where the largest I1 is looked for in each element: both ends and the quadrature points.
-const std::array<double, 7> kSamplePoints = [] {
-  std::array<double, 7> etas{-1.0, 1.0};
-  for (std::size_t k = 0; k < fe::gauss_points().size(); ++k)
-    etas[k + 2] = fe::gauss_points()[k].first;
-  return etas;
-}();
-
 // The converged state in physical units.
 FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::VectorXd& x,
                    const fe::Assembly& assembly, const Scaled& s, FeContact contact) {
@@ -145,20 +137,8 @@ FeState make_state(const Problem& problem, const Mesh& mesh, const Eigen::Vector
       state.part_two_top_reference_radius_mm = out.start_radius_mm;
     if (part.part == MembranePart::Side) state.part_two = true;
     // Largest I1 at the quadrature points and at both ends of every element.
-    std::array<double, fe::kMaxLocal> values;
-    std::array<const Slot*, fe::kMaxLocal> slots;
-    for (int e = 0; e < part.elements; ++e) {
-      const fe::ElementPlace place = fe::gather(mesh, part, e, x, values, slots);
-      for (double eta : kSamplePoints) {
-        double l1, l2, radius, weight;
-        if (!fe::stretches_at(place, values, eta, l1, l2, radius, weight)) continue;
-        const double i1 = first_invariant(l1, l2);
-        if (i1 > state.max_first_invariant) {
-          state.max_first_invariant = i1;
-          state.max_first_invariant_reference_radius_mm = radius * A;
-        }
-      }
-    }
+    fe::raise_largest_first_invariant(
+        mesh, part, x, A, state.max_first_invariant, state.max_first_invariant_reference_radius_mm);
     state.parts.push_back(std::move(out));
   }
   state.part_three_stretch = radius_mm(problem.indenter) / state.corner_reference_radius_mm;

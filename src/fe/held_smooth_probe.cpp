@@ -223,13 +223,6 @@ std::pair<double, int> smallest_gap(const HeldNodes& nodes, const RigidProfile& 
   return smallest;
 }
 
-// Where the largest I1 is looked for in each element: both ends and the quadrature points.
-const std::array<double, 7> kHeldSamplePoints = [] {
-  std::array<double, 7> etas{-1.0, 1.0};
-  for (std::size_t k = 0; k < gauss_points().size(); ++k) etas[k + 2] = gauss_points()[k].first;
-  return etas;
-}();
-
 FeState held_state(const Problem& problem, const HeldLayout& layout, const RigidProfile& profile,
                    const HeldNodes& nodes) {
   const double A = reference_clamp_radius_mm(problem), l0 = problem.preload.prestretch;
@@ -269,20 +262,12 @@ FeState held_state(const Problem& problem, const HeldLayout& layout, const Rigid
       out.radius_mm.push_back(nodes.r[part.first + i] * A);
       out.deflection_mm.push_back(nodes.z[part.first + i] * A);
     }
-    std::array<double, kMaxLocal> values;
-    std::array<const Slot*, kMaxLocal> slots;
-    for (int e = 0; e < part.elements; ++e) {
-      const ElementPlace place = gather(mesh, mesh.parts[k], e, x, values, slots);
-      for (double eta : kHeldSamplePoints) {
-        double l1, l2, radius, weight;
-        if (!stretches_at(place, values, eta, l1, l2, radius, weight)) continue;
-        const double i1 = first_invariant(l1, l2);
-        if (i1 > state.max_first_invariant) {
-          state.max_first_invariant = i1;
-          state.max_first_invariant_reference_radius_mm = radius * A;
-        }
-      }
-    }
+    raise_largest_first_invariant(mesh,
+                                  mesh.parts[k],
+                                  x,
+                                  A,
+                                  state.max_first_invariant,
+                                  state.max_first_invariant_reference_radius_mm);
     state.parts.push_back(std::move(out));
   }
   const auto pole = evaluate_part(state.parts.front(), layout.order, 0.0);

@@ -65,6 +65,32 @@ inline ElementPlace gather(const Mesh& mesh, const MeshPart& part, int e, const 
                       part.profile ? 0.0 : mesh.pressure};
 }
 
+// Raises `largest_i1` and its reference radius [mm] (`clamp_mm` scales the mesh's lengths / A) to
+// the largest I1 of `part`, looked for at both ends and the quadrature points of every element.
+inline void raise_largest_first_invariant(const Mesh& mesh, const MeshPart& part,
+                                          const Eigen::VectorXd& x, double clamp_mm,
+                                          double& largest_i1, double& at_reference_radius_mm) {
+  static const std::array<double, 7> sample_points = [] {
+    std::array<double, 7> etas{-1.0, 1.0};
+    for (std::size_t k = 0; k < gauss_points().size(); ++k) etas[k + 2] = gauss_points()[k].first;
+    return etas;
+  }();
+  std::array<double, kMaxLocal> values;
+  std::array<const Slot*, kMaxLocal> slots;
+  for (int e = 0; e < part.elements; ++e) {
+    const ElementPlace place = gather(mesh, part, e, x, values, slots);
+    for (double eta : sample_points) {
+      double l1, l2, radius, weight;
+      if (!stretches_at(place, values, eta, l1, l2, radius, weight)) continue;
+      const double i1 = first_invariant(l1, l2);
+      if (i1 > largest_i1) {
+        largest_i1 = i1;
+        at_reference_radius_mm = radius * clamp_mm;
+      }
+    }
+  }
+}
+
 struct Assembly {
   bool admissible = true;
   double energy = 0.0;  // integral of W / G  R dR over the membrane, lengths / A (less P V / 2 pi)

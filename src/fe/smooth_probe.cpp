@@ -215,13 +215,6 @@ Eigen::VectorXd starting_guess(const Mesh& mesh, const RigidProfile& profile, co
   return x;
 }
 
-// Where the largest I1 is looked for in each element: both ends and the quadrature points.
-const std::array<double, 7> kSamplePoints = [] {
-  std::array<double, 7> etas{-1.0, 1.0};
-  for (std::size_t k = 0; k < gauss_points().size(); ++k) etas[k + 2] = gauss_points()[k].first;
-  return etas;
-}();
-
 // The integral of z r dr over the membrane on the profile (lengths / A), z = tip - height(s) and
 // r = rho(s) along each element's interpolated arclength: the elements' Gauss rule, accurate to
 // the smooth integrand's order h^10.
@@ -304,20 +297,8 @@ FeState make_state(const Problem& problem, const RigidProfile& profile, const Me
     }
     // Largest I1 at the quadrature points and at both ends of every element (the pole, R = 0,
     // below).
-    std::array<double, kMaxLocal> values;
-    std::array<const Slot*, kMaxLocal> slots;
-    for (int e = 0; e < part.elements; ++e) {
-      const ElementPlace place = gather(mesh, part, e, x, values, slots);
-      for (double eta : kSamplePoints) {
-        double l1, l2, radius, weight;
-        if (!stretches_at(place, values, eta, l1, l2, radius, weight)) continue;
-        const double i1 = first_invariant(l1, l2);
-        if (i1 > state.max_first_invariant) {
-          state.max_first_invariant = i1;
-          state.max_first_invariant_reference_radius_mm = radius * A;
-        }
-      }
-    }
+    raise_largest_first_invariant(
+        mesh, part, x, A, state.max_first_invariant, state.max_first_invariant_reference_radius_mm);
     state.parts.push_back(std::move(out));
   }
   state.part_two = std::any_of(mesh.parts.begin(), mesh.parts.end(), [](const MeshPart& p) {
