@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -16,6 +15,7 @@
 #include "fe/inflated_dome_fe.hpp"
 #include "fe/probe_profiles.hpp"
 #include "fe/smooth_probe.hpp"
+#include "numerics/root_in_bracket.hpp"
 
 namespace puncture::fe {
 namespace {
@@ -126,19 +126,7 @@ class SealedGasFe {
         done = g_hi == 0.0 || (g_hi > 0.0 && hi == floor);
       }
       if (!done && (g_hi < 0.0) != (g_lo < 0.0)) {
-        if (hi < lo) {
-          std::swap(lo, hi);
-          std::swap(g_lo, g_hi);
-        }
-        std::uintmax_t iterations = 40;
-        boost::math::tools::toms748_solve(
-            residual,
-            lo,
-            hi,
-            g_lo,
-            g_hi,
-            [&](double a, double b) { return std::abs(b - a) <= 1e-12 * (std::abs(a) + p_atm); },
-            iterations);
+        detail::close_gas_pressure_bracket(residual, lo, hi, g_lo, g_hi, p_atm);
       }
     } catch (const GasTrialFailed& f) {
       FeState failed = f.state;

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -19,6 +18,7 @@
 #include "indentation/sealed_path_work.hpp"
 #include "indentation/solver_scales.hpp"
 #include "indentation/stored_energy.hpp"
+#include "numerics/root_in_bracket.hpp"
 
 namespace puncture::detail {
 
@@ -165,20 +165,7 @@ Result at_gas_law(const SealedChamber& c, double start, Evaluate&& evaluate,
                         fmt::format("the chamber's pressure could not be bracketed (last tried "
                                     "{:.8g} MPa)",
                                     hi)};
-    if (hi < lo) {
-      std::swap(lo, hi);
-      std::swap(g_lo, g_hi);
-    }
-    // 1e-12 of the absolute pressure: below what the volume's ~1e-10 lets the law resolve.
-    std::uintmax_t iterations = 40;
-    boost::math::tools::toms748_solve(
-        residual,
-        lo,
-        hi,
-        g_lo,
-        g_hi,
-        [&](double a, double b) { return std::abs(b - a) <= 1e-12 * (std::abs(a) + p_atm); },
-        iterations);
+    close_gas_pressure_bracket(residual, lo, hi, g_lo, g_hi, p_atm);
     // A residual left where the bracket closed on a jump of the volume (another branch's state
     // at one end), never a state off the law: ~1e-12 of C where the law holds.
     if (!(best_residual <= 1e-9 * c.gas_content_n_mm()))
