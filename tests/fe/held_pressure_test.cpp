@@ -4,6 +4,7 @@
 // dome, Pi = U - p V minimised, the force its derivative in the depth.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
