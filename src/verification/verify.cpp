@@ -67,13 +67,14 @@ std::optional<double> depth_range(const Problem& q, std::string& why) {
   const PuncturePrediction puncture = predict_puncture(q);
   if (puncture.ok()) return puncture.depth_mm;
   // A model that ends before the puncture (the cone's shank, the ball's equator): the curve
-  // followed towards twice the clamp radius stops at its last state; a held membrane that
-  // reaches the sphere's equator before it punctures (under a gas pressure: 87.8 mm on the
-  // paper's membrane at 0.3 kPa), towards four times.
+  // followed towards twice the clamp radius stops at its last state; a membrane held where it
+  // touched a smooth probe that reaches the sphere's equator before it punctures (under a gas
+  // pressure: 87.8 mm on the paper's membrane at 0.3 kPa), towards four times.
   CurveOptions to_the_end;
   if (puncture.status == Status::OutsideModel)
     to_the_end.max_depth_mm = 2.0 * q.geometry.clamp_radius_mm;
-  else if (q.stick.rule == StickRule::Always && puncture.status == Status::NotReached)
+  else if (smooth_probe(q) && q.stick.rule == StickRule::Always &&
+           puncture.status == Status::NotReached)
     to_the_end.max_depth_mm = 4.0 * q.geometry.clamp_radius_mm;
   const LoadingCurve curve = loading_curve(q, to_the_end);
   if (!curve.points.empty() && curve.points.back().depth_mm > 0.0) {
