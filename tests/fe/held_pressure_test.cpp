@@ -73,7 +73,9 @@ TEST_P(FiniteElementHeldUnderPressure, MatchesTheShootingsHeldStates) {
     EXPECT_EQ(fe[k].contact, FeContact::Held);
     EXPECT_EQ(fe[k].gas_pressure_mpa, c.pressure_mpa);
     // The probe pushes the membrane down: the enclosed volume falls with the depth.
-    if (k > 0) EXPECT_LT(fe[k].volume_mm3, fe[k - 1].volume_mm3) << c.depths_mm[k] << " mm";
+    if (k > 0) {
+      EXPECT_LT(fe[k].volume_mm3, fe[k - 1].volume_mm3) << c.depths_mm[k] << " mm";
+    }
     const double force = fe[k].force_n / e.force_n - 1.0;
     record("force_error", force);
     EXPECT_LT(std::abs(force), 1e-3) << c.depths_mm[k] << " mm";

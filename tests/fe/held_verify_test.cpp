@@ -81,10 +81,12 @@ TEST(HeldVerify, ChecksBothPiecesOfASwitchingRule) {
     }
     // The held piece's depths end at the switch, the sliding piece's start past it.
     for (const auto& c : r.checks) {
-      if (c.group == "held until the switch")
+      if (c.group == "held until the switch") {
         EXPECT_NE(c.condition.find("of the switch depth"), std::string::npos) << c.condition;
-      if (c.group == "sliding after the switch")
+      }
+      if (c.group == "sliding after the switch") {
         EXPECT_NE(c.condition.find("from the switch"), std::string::npos) << c.condition;
+      }
     }
     record(what + " switch depth", boundary.depth_mm);
   }
