@@ -117,7 +117,8 @@ void bind_verification(py::module_& m) {
       py::arg("order") = 2,
       "The second method: finite elements minimising the stored energy at increasing depths\n"
       "[mm], by continuation from the flat membrane (under a gas pressure: U - p V from the\n"
-      "elements' own inflated dome, frictionless).  Frictionless or held contact only\n"
+      "elements' own inflated dome, frictionless or on a smooth probe held where it\n"
+      "touched).  Frictionless or held contact only\n"
       "(problem.friction and problem.stick are not used).  A list of FeState; one that did not\n"
       "converge says why in .message.");
 

@@ -21,14 +21,17 @@ void add_verify_command(CLI::App& app, VerifyFlags& f) {
       "limit; a table of quantity, shooting, second method, difference and verdict.\n"
       "For the other probes (sphere-tipped, rounded corner, cone, ball): mu' = 0 and the\n"
       "work (no Foppl disc), up to the puncture or the model's end; with --stick always\n"
-      "also the held force against elements held where the membrane touched.\n"
+      "also the held force, pole stretch, contact edge and largest I1 against elements\n"
+      "held where the membrane touched (also under --pressure), and with a --stick rule\n"
+      "that switches those held rows up to the switch and mu' = 0 rows after it.\n"
       "Under --pressure: mu' = 0 from the elements' own inflated dome (U - p V\n"
       "minimised, the work against its change) and the dome against the shooting's;\n"
       "with --gas-volume over the sealed chamber (the gas law's pressure per depth)");
   f.command->footer(
       "The physical flags (see puncture --help) choose the membrane; the friction and stick\n"
       "flags are replaced by the two limits the finite elements cover (on a smooth probe\n"
-      "--stick always adds the held one).  Takes seconds (a minute held to the puncture).\n"
+      "--stick adds the held one, up to the rule's switch).  Takes seconds (a minute or\n"
+      "more held to the puncture).\n"
       "Exit code 4 when a check is outside its tolerance (the table is written first).");
   f.command
       ->add_option("--elements",

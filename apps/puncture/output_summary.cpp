@@ -88,10 +88,11 @@ std::string summary_text(const VerifyReport& r) {
         "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
         "  for their own error), minimising U - p V from their own inflated dome at mu' = 0,\n"
         "  the membrane lying on the probe's profile (e.g. a flat punch: face, corner or fillet,\n"
-        "  side) up to a contact edge the method finds.  Under pressure neither the stick stage\n"
-        "  nor the small-deflection (Foppl) limit is checked: the elements' dome against the\n"
-        "  shooting's instead; friction (mu' = {} here) is checked by the test suite's Coulomb\n"
-        "  identities.\n",
+        "  side) up to a contact edge the method finds; on a smooth probe with --stick also\n"
+        "  held where the membrane touched (up to the rule's switch, then mu' = 0).  Under\n"
+        "  pressure the small-deflection (Foppl) limit is not checked: the elements' dome\n"
+        "  against the shooting's instead; friction (mu' = {} here) is checked by the test\n"
+        "  suite's Coulomb identities.\n",
         v.elements,
         v.elements / 2,
         num(r.problem.friction, "friction"));
@@ -100,10 +101,10 @@ std::string summary_text(const VerifyReport& r) {
         "Verification: the shooting solver against independent methods\n"
         "  second method: finite elements, {} quadratic elements along the free part (and {}\n"
         "  for their own error), the membrane lying on the probe's profile up to a contact\n"
-        "  edge the method finds, minimising the stored energy at mu' = 0; with --stick always\n"
-        "  also held where the membrane touched (the force).  The small-deflection (Foppl)\n"
-        "  limit is not checked; friction (mu' = {} here) is checked by the test suite's\n"
-        "  Coulomb identities.\n",
+        "  edge the method finds, minimising the stored energy at mu' = 0; with --stick also\n"
+        "  held where the membrane touched (force, pole stretch, edge, largest I1; up to the\n"
+        "  rule's switch, then mu' = 0).  The small-deflection (Foppl) limit is not checked;\n"
+        "  friction (mu' = {} here) is checked by the test suite's Coulomb identities.\n",
         v.elements,
         v.elements / 2,
         num(r.problem.friction, "friction"));

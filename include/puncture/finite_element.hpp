@@ -87,8 +87,9 @@ struct FeState : Outcome {
 };
 
 // States at the given depths [mm] (increasing, > 0), each reached by continuation in depth from
-// the flat membrane, or under a gas pressure (frictionless only) from the elements' own inflated
-// dome, minimising U - p V, depths counted from its pole (docs/model.md §17.2).  Over a sealed
+// the flat membrane, or under a gas pressure (frictionless, and held on a smooth probe) from the
+// elements' own inflated dome, minimising U - p V, depths counted from its pole (docs/model.md
+// §17.2, §15.3).  Over a sealed
 // chamber (Preload::gas_volume_mm3, closed at a pressure > 0) each state is the one at the
 // pressure its own volume gives by the gas law, depths from the sealed dome's pole.  Throws
 // std::invalid_argument for an invalid problem, depths or options.

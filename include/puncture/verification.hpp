@@ -13,9 +13,11 @@
 // Coulomb and capstan identities of the test suite (tests/solver).  On every other probe
 // (sphere-tipped, rounded corner, cone, ball) the frictionless limit is checked (force, pole
 // stretch, contact edge, largest I1, work), up to the puncture or, for the cone and the ball, the
-// end of their model (the Foppl check is the flat punch's); with the stick rule `always` (and no
-// gas) also the held force against the elements held where the membrane touched, up to the held
-// puncture or the held model's end (group "held where it touched").
+// end of their model (the Foppl check is the flat punch's); with the stick rule `always` (also
+// at a held gas pressure) also the held force, pole stretch, contact edge and largest I1 against
+// the elements held where the membrane touched, up to the held puncture or the held model's end
+// (group "held where it touched"); with a rule that switches, those held rows up to the switch
+// ("held until the switch") and the frictionless rows after it ("sliding after the switch").
 #include <functional>
 #include <string>
 #include <string_view>

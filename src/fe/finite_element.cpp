@@ -420,10 +420,11 @@ std::vector<FeState> fe_solve_at_depths(const Problem& problem,
   validate(problem);
   const bool smooth = !sharp_flat_punch(problem.indenter);
   const bool pressurised = problem.preload.pressure_mpa > 0.0;
-  if (pressurised && contact == FeContact::Held)
+  if (pressurised && contact == FeContact::Held && !smooth)
     throw InvalidInput("preload.pressure_mpa",
-                       "under a gas pressure the finite elements are frictionless only (a held "
-                       "edge would need the stick stage's history of the face)");
+                       "under a gas pressure the finite elements on the sharp flat punch are "
+                       "frictionless only (a held edge would need the stick stage's history of "
+                       "the face); held where it touched they cover the smooth probes");
   if (problem.preload.gas_volume_mm3 && !pressurised)
     throw InvalidInput("preload.pressure_mpa",
                        "over a sealed gas chamber the finite elements need it closed at a gauge "

@@ -18,9 +18,11 @@
 #include <string>
 
 #include "fe/energy_newton.hpp"
+#include "fe/inflated_dome_fe.hpp"
 #include "fe/meridian_mesh.hpp"
 #include "fe/part_evaluation.hpp"
 #include "fe/smooth_probe.hpp"
+#include "indentation/solver_scales.hpp"
 
 namespace puncture::fe {
 namespace {
@@ -49,7 +51,9 @@ struct HeldLayout {
 
 // The state of the history at one depth: every node of the layout.
 struct HeldNodes {
-  double tip = 0.0;          // depth of the probe's pole below the clamp plane (/ A)
+  // The probe's pole below the clamp plane (/ A): the depth, less the inflated dome's height
+  // under a gas pressure (depths count from the dome's pole).
+  double tip = 0.0;
   std::vector<double> r, z;  // current radius and deflection below the clamp plane (/ A)
   std::vector<char> held;    // on the profile, at arclength `s`, moving with the probe
   std::vector<double> s;
@@ -116,14 +120,26 @@ HeldNodes first_touch(const HeldLayout& layout, const RigidProfile& profile, dou
   return nodes;
 }
 
+// Under a gas pressure the start: the inflated dome on the held layout, the minimum of U - p V
+// with no node held, started from the elements' own dome (inflated_dome_fe.cpp, interpolated),
+// then its pole held at s = 0 with the probe's pole there (depth 0).  `lift` receives the pole's
+// height above the clamp plane (/ A); a dome the membrane cannot hold is `failure`'s state.
+std::optional<HeldNodes> inflated_touch(const Problem& problem, const HeldLayout& layout,
+                                        const RigidProfile& profile, const FeOptions& options,
+                                        double& lift, FeState& failure);
+
 // The discrete problem at depth `tip` for the held set of `nodes`: a held node at its profile
 // point, its deflection moving with the depth (its reaction is part of the force); the clamp
 // fixed; the pole on the axis.  `unknown_r`/`unknown_z` receive each node's unknown (-1 if none).
+// Under a gas pressure every element carries its P int z r dr, the held ones too: their volume
+// moves with the probe, so the held nodes' reaction is dPi/d(depth) with Pi = U - p V.
 Mesh held_mesh(const HeldLayout& layout, const HeldNodes& nodes, const RigidProfile& profile,
-               double tip, double prestretch, std::vector<int>& unknown_r,
+               double tip, const Problem& problem, std::vector<int>& unknown_r,
                std::vector<int>& unknown_z) {
+  const double prestretch = problem.preload.prestretch;
   Mesh mesh;
   mesh.order = layout.order;
+  mesh.pressure = detail::dome_pressure(problem);
   const int n = layout.nodes();
   unknown_r.assign(n, -1);
   unknown_z.assign(n, -1);
@@ -181,7 +197,7 @@ std::optional<HeldNodes> held_equilibrium(const Problem& problem, const HeldLayo
                                           std::string& failure) {
   const double l0 = problem.preload.prestretch;
   std::vector<int> ur, uz;
-  const Mesh mesh = held_mesh(layout, from, profile, tip, l0, ur, uz);
+  const Mesh mesh = held_mesh(layout, from, profile, tip, problem, ur, uz);
   Eigen::VectorXd x(mesh.unknowns);
   const double edge_radius = std::max(layout.radius[std::max(edge_node(from), 1)], 1e-12);
   for (int i = 0; i < layout.nodes(); ++i) {
@@ -212,6 +228,54 @@ std::optional<HeldNodes> held_equilibrium(const Problem& problem, const HeldLayo
   return out;
 }
 
+std::optional<HeldNodes> inflated_touch(const Problem& problem, const HeldLayout& layout,
+                                        const RigidProfile& profile, const FeOptions& options,
+                                        double& lift, FeState& failure) {
+  const double A = reference_clamp_radius_mm(problem), l0 = problem.preload.prestretch;
+  const FeDome dome = solve_dome(problem, options);
+  if (!dome.state.ok()) {
+    failure = dome.state;
+    return std::nullopt;
+  }
+  const FePart& part = dome.state.parts.front();
+  const int n = layout.nodes();
+  HeldNodes nodes;
+  nodes.r.resize(n);
+  nodes.z.resize(n);
+  nodes.held.assign(n, 0);
+  nodes.s.assign(n, 0.0);
+  for (int i = 0; i < n; ++i) {
+    const auto at = evaluate_part(part, dome.state.order, std::min(layout.radius[i] * A, A));
+    nodes.r[i] = i == 0 ? 0.0 : i == n - 1 ? l0 : at->radius / A;
+    nodes.z[i] = i == n - 1 ? 0.0 : at->deflection / A;
+  }
+  std::vector<int> ur, uz;
+  const Mesh mesh = held_mesh(layout, nodes, profile, 0.0, problem, ur, uz);
+  Eigen::VectorXd x(mesh.unknowns);
+  for (int i = 0; i < n; ++i) {
+    if (ur[i] >= 0) x[ur[i]] = nodes.r[i];
+    if (uz[i] >= 0) x[uz[i]] = nodes.z[i];
+  }
+  const NewtonResult newton =
+      minimise_energy(problem.material.law, mesh, x, options.max_newton_iterations);
+  if (!newton.ok()) {
+    failure.status = newton.status;
+    failure.message = "the inflated dome on the held mesh: " + newton.message;
+    return std::nullopt;
+  }
+  for (int i = 0; i < n; ++i) {
+    if (ur[i] >= 0) nodes.r[i] = x[ur[i]];
+    if (uz[i] >= 0) nodes.z[i] = x[uz[i]];
+  }
+  lift = -nodes.z[0];
+  nodes.tip = -lift;
+  nodes.held[0] = 1;
+  nodes.energy = newton.assembly.energy;
+  nodes.newton_iterations = newton.iterations;
+  nodes.unknowns = mesh.unknowns;
+  return nodes;
+}
+
 // The smallest signed gap of a free node from the profile (< 0: inside the probe) and its node.
 std::pair<double, int> smallest_gap(const HeldNodes& nodes, const RigidProfile& profile) {
   std::pair<double, int> smallest{std::numeric_limits<double>::infinity(), -1};
@@ -223,19 +287,17 @@ std::pair<double, int> smallest_gap(const HeldNodes& nodes, const RigidProfile& 
   return smallest;
 }
 
+// `lift`: the inflated dome's pole height (/ A) under a gas pressure, from which depths count.
 FeState held_state(const Problem& problem, const HeldLayout& layout, const RigidProfile& profile,
-                   const HeldNodes& nodes) {
+                   const HeldNodes& nodes, double lift) {
   const double A = reference_clamp_radius_mm(problem), l0 = problem.preload.prestretch;
   FeState state;
   state.status = Status::Converged;
   state.contact = FeContact::Held;
   state.order = layout.order;
-  state.depth_mm = nodes.tip * A;
+  state.depth_mm = (nodes.tip + lift) * A;
   state.normalized_force = nodes.reaction / l0;
   state.force_n = nodes.reaction * (force_scale_n(problem) / l0);
-  state.stored_energy_nmm = nodes.energy * 2.0 * std::numbers::pi *
-                            problem.material.shear_modulus_mpa * problem.geometry.thickness_mm * A *
-                            A;
   state.newton_iterations = nodes.newton_iterations;
   state.unknowns = nodes.unknowns;
   const int edge = edge_node(nodes);
@@ -244,12 +306,22 @@ FeState held_state(const Problem& problem, const HeldLayout& layout, const Rigid
   state.contact_edge_radius_mm = nodes.r[edge] * A;
   state.largest_penetration_mm = std::max(0.0, -smallest_gap(nodes, profile).first * A);
   std::vector<int> ur, uz;
-  const Mesh mesh = held_mesh(layout, nodes, profile, nodes.tip, l0, ur, uz);
+  const Mesh mesh = held_mesh(layout, nodes, profile, nodes.tip, problem, ur, uz);
   Eigen::VectorXd x(mesh.unknowns);
   for (int i = 0; i < layout.nodes(); ++i) {
     if (ur[i] >= 0) x[ur[i]] = nodes.r[i];
     if (uz[i] >= 0) x[uz[i]] = nodes.z[i];
   }
+  // The energy minimised is U - p V: U is it less the P int z r dr of every element.
+  double energy = nodes.energy;
+  if (mesh.pressure != 0.0) {
+    const double volume = free_volume_integral(mesh, x);
+    energy -= mesh.pressure * volume;
+    state.volume_mm3 = -2.0 * std::numbers::pi * volume * A * A * A;
+    state.gas_pressure_mpa = problem.preload.pressure_mpa;
+  }
+  state.stored_energy_nmm = energy * 2.0 * std::numbers::pi * problem.material.shear_modulus_mpa *
+                            problem.geometry.thickness_mm * A * A;
   for (std::size_t k = 0; k < layout.parts.size(); ++k) {
     const HeldPartLayout& part = layout.parts[k];
     FePart out;
@@ -391,20 +463,34 @@ std::vector<FeState> solve_held_smooth_probe(const Problem& problem, const Rigid
                                              const FeOptions& options) {
   const double A = reference_clamp_radius_mm(problem), l0 = problem.preload.prestretch;
   const HeldLayout layout = held_layout(profile, l0, options);
-  HeldNodes current = first_touch(layout, profile, l0);
   std::vector<FeState> states;
+  double lift = 0.0;  // under a gas pressure the dome's pole height: depths count from it
+  HeldNodes current;
+  if (problem.preload.pressure_mpa > 0.0) {
+    FeState failure;
+    std::optional<HeldNodes> dome =
+        inflated_touch(problem, layout, profile, options, lift, failure);
+    if (!dome) {
+      fill_unreached_depths(states, depths_mm, FeContact::Held, failure.status, failure.message);
+      return states;
+    }
+    current = std::move(*dome);
+  } else {
+    current = first_touch(layout, profile, l0);
+  }
   // The first step: a few times the depth at which the probe would reach the first free node of
-  // the flat membrane (on a fine mesh a larger one has the pole alone push the flat membrane into
-  // a cone steep enough to lock); the steps double from there.
+  // the flat membrane or the dome (on a fine mesh a larger one has the pole alone push the flat
+  // membrane into a cone steep enough to lock); the steps double from there.
   double step = options.max_depth_step;
   for (int i = 0; i < layout.nodes(); ++i)
     if (!current.held[i]) {
-      const double touch = profile.height(profile.closest_arclength(current.r[i], 0.0));
+      const double touch = profile.height(profile.closest_arclength(current.r[i], 0.0)) -
+                           (current.tip - current.z[i]);
       step = std::min(step, std::max(4.0 * touch, 1e-9));
       break;
     }
   for (double target_mm : depths_mm) {
-    const double target = target_mm / A;
+    const double target = target_mm / A - lift;
     int halvings = 0;
     std::string failure;
     Status failure_status = FeState{}.status;
@@ -416,12 +502,13 @@ std::vector<FeState> solve_held_smooth_probe(const Problem& problem, const Rigid
         step = std::min(2.0 * step, options.max_depth_step);
         halvings = 0;
       } catch (const HeldEndReached& end) {
-        failure = fmt::format("beyond depth {:.6g} mm {}", current.tip * A, end.message);
+        failure = fmt::format("beyond depth {:.6g} mm {}", (current.tip + lift) * A, end.message);
         failure_status = end.status;
       } catch (const std::runtime_error& e) {
         if (++halvings > options.max_step_halvings) {
-          failure = fmt::format(
-              "no equilibrium found beyond depth {:.6g} mm: {}", current.tip * A, e.what());
+          failure = fmt::format("no equilibrium found beyond depth {:.6g} mm: {}",
+                                (current.tip + lift) * A,
+                                e.what());
         } else {
           step *= 0.5;
         }
@@ -431,7 +518,7 @@ std::vector<FeState> solve_held_smooth_probe(const Problem& problem, const Rigid
       fill_unreached_depths(states, depths_mm, FeContact::Held, failure_status, failure);
       return states;
     }
-    states.push_back(held_state(problem, layout, profile, current));
+    states.push_back(held_state(problem, layout, profile, current, lift));
   }
   return states;
 }

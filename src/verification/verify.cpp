@@ -67,10 +67,15 @@ std::optional<double> depth_range(const Problem& q, std::string& why) {
   const PuncturePrediction puncture = predict_puncture(q);
   if (puncture.ok()) return puncture.depth_mm;
   // A model that ends before the puncture (the cone's shank, the ball's equator): the curve
-  // followed towards twice the clamp radius stops at its last state.
+  // followed towards twice the clamp radius stops at its last state; a membrane held where it
+  // touched a smooth probe that reaches the sphere's equator before it punctures (under a gas
+  // pressure: 87.8 mm on the paper's membrane at 0.3 kPa), towards four times.
   CurveOptions to_the_end;
   if (puncture.status == Status::OutsideModel)
     to_the_end.max_depth_mm = 2.0 * q.geometry.clamp_radius_mm;
+  else if (smooth_probe(q) && q.stick.rule == StickRule::Always &&
+           puncture.status == Status::NotReached)
+    to_the_end.max_depth_mm = 4.0 * q.geometry.clamp_radius_mm;
   const LoadingCurve curve = loading_curve(q, to_the_end);
   if (!curve.points.empty() && curve.points.back().depth_mm > 0.0) {
     why = fmt::format("no puncture ({}); up to the end of the loading curve", puncture.message);
@@ -167,6 +172,18 @@ struct FeOverRange {
   FeOptions fine_options;
 };
 
+// The finite elements on the fine and the half mesh at `run.depths`.
+void fe_at_depths(const Problem& q, FeContact contact, const std::string& group,
+                  const VerifyOptions& options, Checks& checks, FeOverRange& run) {
+  FeOptions coarse;
+  run.fine_options.elements = options.elements;
+  coarse.elements = std::max(2, options.elements / 2);
+  checks.step(fmt::format("{}: finite elements, {} elements", group, options.elements));
+  run.fine = fe_solve_at_depths(q, run.depths, contact, run.fine_options);
+  checks.step(fmt::format("{}: finite elements, {} elements", group, coarse.elements));
+  run.coarse = fe_solve_at_depths(q, run.depths, contact, coarse);
+}
+
 std::optional<FeOverRange> fe_over_range(const Problem& q, FeContact contact,
                                          const std::string& group, const std::string& kind,
                                          const VerifyOptions& options, Checks& checks) {
@@ -180,30 +197,20 @@ std::optional<FeOverRange> fe_over_range(const Problem& q, FeContact contact,
   }
   FeOverRange run;
   for (int k = 1; k <= options.depths; ++k) run.depths.push_back(*range * k / options.depths);
-  FeOptions coarse;
-  run.fine_options.elements = options.elements;
-  coarse.elements = std::max(2, options.elements / 2);
-  checks.step(fmt::format("{}: finite elements, {} elements", group, options.elements));
-  run.fine = fe_solve_at_depths(q, run.depths, contact, run.fine_options);
-  checks.step(fmt::format("{}: finite elements, {} elements", group, coarse.elements));
-  run.coarse = fe_solve_at_depths(q, run.depths, contact, coarse);
+  fe_at_depths(q, contact, group, options, checks, run);
   run.range_note = why.empty() ? fmt::format("of the {}puncture depth", kind)
                                : fmt::format("of the {}loading curve's last depth", kind);
   return run;
 }
 
-// Force, Part III stretch and largest I1 against the finite elements, and the work of the
-// shooting's force against the finite elements' stored energy, in one limit.
-void compare_limit(const Problem& problem, FeContact contact, const VerifyOptions& options,
-                   Checks& checks) {
-  const Problem q = limit_problem(problem, contact);
-  const std::string group = group_of(contact);
-  const std::optional<FeOverRange> run = fe_over_range(q, contact, group, "", options, checks);
-  if (!run) return;
-  const auto& depths = run->depths;
-  const auto& fe = run->fine;
-  const auto& fe_coarse = run->coarse;
-  const auto& range_note = run->range_note;
+// Force, Part III stretch and largest I1 of the shooting's states of `q` in `contact`'s stage
+// against the finite elements at `run`'s depths.
+void limit_rows(const Problem& q, FeContact contact, const std::string& group,
+                const FeOverRange& run, const VerifyOptions& options, Checks& checks) {
+  const auto& depths = run.depths;
+  const auto& fe = run.fine;
+  const auto& fe_coarse = run.coarse;
+  const auto& range_note = run.range_note;
   for (std::size_t k = 0; k < depths.size(); ++k) {
     const std::string where =
         fmt::format("depth {:.5g} mm ({}/{} {})", depths[k], k + 1, options.depths, range_note);
@@ -288,6 +295,20 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
                           "{:.1e}, order 2)",
                           i1_error)));
   }
+}
+
+// The rows of limit_rows over the limit's depth range, and the work of the shooting's force
+// against the finite elements' stored energy, in one limit.
+void compare_limit(const Problem& problem, FeContact contact, const VerifyOptions& options,
+                   Checks& checks) {
+  const Problem q = limit_problem(problem, contact);
+  const std::string group = group_of(contact);
+  const std::optional<FeOverRange> run = fe_over_range(q, contact, group, "", options, checks);
+  if (!run) return;
+  limit_rows(q, contact, group, *run, options, checks);
+  const auto& depths = run->depths;
+  const auto& fe = run->fine;
+  const auto& fe_coarse = run->coarse;
   // Work = energy at the deepest point: the integral of the shooting's force over the depth
   // against the stored energy of the finite elements.  Adaptive Gauss-Kronrod on pieces where
   // the force is smooth (its curvature jumps where Part II appears); below 1 % of the depth the
@@ -373,31 +394,36 @@ void compare_limit(const Problem& problem, FeContact contact, const VerifyOption
                         energy_error)));
 }
 
-// On a smooth probe with the stick rule `always`: the force of the shooting's held states (the
-// contact map of docs/model.md §15.4, §15.5) against the finite elements held where the membrane
-// touched (§15.3, "Held where it touched"), at depths up to the held puncture or the held model's
-// end.  The elements' force error has no smooth expansion (the edge stays at a node between the
-// depths where a node touches: a sawtooth); its envelope converges about as h^2 on the
-// sphere-tipped probe and the fillet (sphere, 2 to 120 mm: 2.7e-3, 5.2e-4, 1.05e-4, 3.2e-5 at 32
-// to 256 elements) but only as h^0.15 between 64 and 128 on the cone's 0.5 mm tip at 1.5 mm
-// (5.8e-4, 5.2e-4), so the floor is first order, 2.5e-3 (64 / n), at least twice the worst
-// measured at 64 to 256 elements, or 4x the error estimated from the half mesh (order 2).
-void compare_held_smooth_probe(const Problem& problem, const VerifyOptions& options,
-                               Checks& checks) {
-  const Problem q = limit_problem(problem, FeContact::Held);
-  const std::string group = "held where it touched";
-  const std::optional<FeOverRange> run =
-      fe_over_range(q, FeContact::Held, group, "held ", options, checks);
-  if (!run) return;
-  const auto& depths = run->depths;
-  const auto& fe = run->fine;
-  const auto& fe_coarse = run->coarse;
-  const auto& range_note = run->range_note;
-  const FeOptions& fine = run->fine_options;
+// The spacing of the nodes [mm] of the part of `state` holding its contact edge: the held edge is
+// a node, the shooting's within one spacing of it.
+double edge_node_spacing_mm(const FeState& state) {
+  for (const FePart& part : state.parts)
+    if (part.start_radius_mm <= state.part_two_top_reference_radius_mm &&
+        state.part_two_top_reference_radius_mm <= part.end_radius_mm && part.elements > 0)
+      return (part.end_radius_mm - part.start_radius_mm) / (part.elements * state.order);
+  return 0.0;
+}
+
+// The shooting's held states of `q` (stick `always`: the contact map of docs/model.md §15.4,
+// §15.5, §17.3) against the finite elements held where the membrane touched (§15.3, "Held where
+// it touched") at `run`'s depths: force, pole stretch, contact edge and largest I1.  The
+// elements' force error has no smooth expansion (the edge stays at a node between the depths
+// where a node touches: a sawtooth); its envelope converges about as h^2 on the sphere-tipped
+// probe and the fillet (sphere, 2 to 120 mm: 2.7e-3, 5.2e-4, 1.05e-4, 3.2e-5 at 32 to 256
+// elements) but only as h^0.15 between 64 and 128 on the cone's 0.5 mm tip at 1.5 mm (5.8e-4,
+// 5.2e-4), so the floor is first order, 2.5e-3 (64 / n), at least twice the worst measured at 64
+// to 256 elements, or 4x the error estimated from the half mesh (order 2).  The other rows'
+// floors: §15.3's convergence study.
+void held_rows(const Problem& q, const std::string& group, const FeOverRange& run,
+               const VerifyOptions& options, Checks& checks) {
+  const auto& depths = run.depths;
+  const auto& fe = run.fine;
+  const auto& fe_coarse = run.coarse;
+  const FeOptions& fine = run.fine_options;
   const double envelope = 2.5e-3 * 64.0 / fine.elements;
   for (std::size_t k = 0; k < depths.size(); ++k) {
     const std::string where =
-        fmt::format("depth {:.5g} mm ({}/{} {})", depths[k], k + 1, options.depths, range_note);
+        fmt::format("depth {:.5g} mm ({}/{} {})", depths[k], k + 1, options.depths, run.range_note);
     const Equilibrium e = solve_at_depth(q, depths[k], Stage::Stick);
     if (!e.ok()) {
       checks.rows.push_back(skipped(group, "force [N]", where, "shooting: " + e.message));
@@ -420,7 +446,125 @@ void compare_held_smooth_probe(const Problem& problem, const VerifyOptions& opti
                           envelope,
                           fine.elements,
                           force_error)));
+    const double pole_floor = 2.5e-4 * std::pow(64.0 / fine.elements, 2);
+    const double pole_error =
+        estimated_error(fe[k].part_three_stretch, fe_coarse[k].part_three_stretch, 2);
+    checks.rows.push_back(
+        check(group,
+              "pole stretch",
+              where,
+              e.part_three_stretch,
+              fe[k].part_three_stretch,
+              std::max(pole_floor, 4.0 * pole_error),
+              fmt::format("the first element's stretch, order 2: {:.1e} at {} elements, or 4x "
+                          "its error (estimated {:.1e})",
+                          pole_floor,
+                          fine.elements,
+                          pole_error)));
+    // The edge is the last held node: the shooting's lies within a node's spacing of it.
+    const double spacing_mm = edge_node_spacing_mm(fe[k]);
+    checks.rows.push_back(check(
+        group,
+        "contact edge R [mm]",
+        where,
+        e.part_two_top_reference_radius_mm,
+        fe[k].part_two_top_reference_radius_mm,
+        spacing_mm / e.part_two_top_reference_radius_mm,
+        fmt::format("a node of the elements: within their spacing there, {:.3g} mm", spacing_mm)));
+    // The largest I1 sits at the edge: the elements' is the edge's I1 within a node's spacing
+    // of the shooting's edge, so its error is about the change of the shooting's edge I1 as the
+    // edge moves by that spacing (from a state at 0.999 of the depth), which grows without bound
+    // towards the held models' end, where the held stretch grows steeply.
+    const Equilibrium before = solve_at_depth(q, 0.999 * depths[k], Stage::Stick);
+    const double edge_moved =
+        e.part_two_top_reference_radius_mm - before.part_two_top_reference_radius_mm;
+    const double edge_slope =
+        before.ok() && edge_moved > 0.0
+            ? (e.max_first_invariant - before.max_first_invariant) / edge_moved
+            : 0.0;
+    const double over_a_node = std::abs(edge_slope) * spacing_mm / e.max_first_invariant;
+    const double i1_floor = 6e-2 * 64.0 / fine.elements;
+    const double i1_error =
+        estimated_error(fe[k].max_first_invariant, fe_coarse[k].max_first_invariant, 1);
+    checks.rows.push_back(check(
+        group,
+        "largest I1",
+        where,
+        e.max_first_invariant,
+        fe[k].max_first_invariant,
+        std::max({i1_floor, 4.0 * i1_error, over_a_node}),
+        fmt::format("at the edge, a node: twice the measured worst, {:.1e} at {} elements, 4x "
+                    "their error (estimated {:.1e}, order 1), or the edge's I1 change over a "
+                    "node, {:.1e}",
+                    i1_floor,
+                    fine.elements,
+                    i1_error,
+                    over_a_node)));
   }
+}
+
+// On a smooth probe with the stick rule `always`: the held rows up to the held puncture or the
+// held model's end.
+void compare_held_smooth_probe(const Problem& problem, const VerifyOptions& options,
+                               Checks& checks) {
+  const Problem q = limit_problem(problem, FeContact::Held);
+  const std::string group = "held where it touched";
+  const std::optional<FeOverRange> run =
+      fe_over_range(q, FeContact::Held, group, "held ", options, checks);
+  if (run) held_rows(q, group, *run, options, checks);
+}
+
+// On a smooth probe with a stick rule that holds until a criterion (`force`, `depth`,
+// `edge-tension`, `coulomb`): the membrane is held along the `always` path up to the switch,
+// then slides.  The held piece: the held rows at depths up to the switch; the sliding piece: the
+// frictionless rows at depths from the switch to the frictionless puncture (or the loading
+// curve's end).  A frictionless state has no history, so after the switch the user's curve at
+// mu' = 0 is the frictionless limit's; with mu' > 0 the sliding piece is checked at mu' = 0
+// only (the elements have no friction: it dissipates).
+void compare_stick_switch(const Problem& problem, const VerifyOptions& options, Checks& checks) {
+  const std::string held_group = "held until the switch",
+                    sliding_group = "sliding after the switch";
+  checks.step("the stick -> slip switch");
+  const StageBoundary boundary = stick_slip_boundary(problem);
+  if (!boundary.ok()) {
+    checks.rows.push_back(
+        skipped(held_group, "force [N]", "", "no stick -> slip switch: " + boundary.message));
+    return;
+  }
+  if (!boundary.switches) {
+    // Held throughout, as `always`; or sliding from the first touch: the frictionless rows.
+    if (boundary.first_stage == Stage::Stick) compare_held_smooth_probe(problem, options, checks);
+    return;
+  }
+  const double switch_mm = boundary.depth_mm;
+  const Problem held = limit_problem(problem, FeContact::Held);
+  FeOverRange before;
+  for (int k = 1; k <= options.depths; ++k) before.depths.push_back(switch_mm * k / options.depths);
+  before.range_note = fmt::format("of the switch depth {:.5g} mm", switch_mm);
+  fe_at_depths(held, FeContact::Held, held_group, options, checks, before);
+  held_rows(held, held_group, before, options, checks);
+
+  const Problem sliding = limit_problem(problem, FeContact::Frictionless);
+  checks.step(fmt::format("{}: the depth range", sliding_group));
+  std::string why;
+  const std::optional<double> end = depth_range(sliding, why);
+  if (!end || *end <= switch_mm) {
+    checks.rows.push_back(skipped(
+        sliding_group,
+        "force [N]",
+        "",
+        end ? fmt::format("the frictionless range ends at {:.5g} mm, before the switch", *end)
+            : "no frictionless loading curve: " + why));
+    return;
+  }
+  FeOverRange after;
+  for (int k = 1; k <= options.depths; ++k)
+    after.depths.push_back(switch_mm + (*end - switch_mm) * k / options.depths);
+  after.range_note = fmt::format("of the way from the switch to the {}",
+                                 why.empty() ? "puncture depth" : "loading curve's last depth");
+  if (problem.friction != 0.0) after.range_note += ", at mu' = 0";
+  fe_at_depths(sliding, FeContact::Frictionless, sliding_group, options, checks, after);
+  limit_rows(sliding, FeContact::Frictionless, sliding_group, after, options, checks);
 }
 
 // Pre-stretched: F / delta of the full solver at a small depth against the linear stiffness of
@@ -579,15 +723,19 @@ VerificationReport verify(const Problem& problem, const VerifyOptions& options) 
   // small-deflection check is the flat punch's Foppl disc).
   // Under a gas pressure the same, frictionless (the held edge would need the stick stage's
   // history), with the dome in place of the small-deflection limits.
-  // With the stick rule `always` on a smooth probe (no gas), also the held states against the
-  // elements held where the membrane touched.
+  // With the stick rule `always` on a smooth probe (also at a held gas pressure), also the held
+  // states against the elements held where the membrane touched; with a rule that switches, the
+  // held piece up to the switch and the sliding piece after it.
   const bool smooth = smooth_probe(problem), pressurised = inflated(problem);
-  const bool held_smooth = smooth && !pressurised && problem.stick.rule == StickRule::Always;
-  Checks checks(options, smooth ? (held_smooth ? 5 + 3 : 5) : pressurised ? 6 : 2 * 5 + 2);
+  const StickRule rule = problem.stick.rule;
+  const bool stick_rows = smooth && !sealed(problem) && rule != StickRule::None;
+  const int stick_steps = !stick_rows ? 0 : rule == StickRule::Always ? 3 : 1 + 2 + 3;
+  Checks checks(options, smooth ? 5 + stick_steps : pressurised ? 6 : 2 * 5 + 2);
   for (const FeContact contact : {FeContact::Frictionless, FeContact::Held})
     if (!(smooth || pressurised) || contact == FeContact::Frictionless)
       compare_limit(problem, contact, options, checks);
-  if (held_smooth) compare_held_smooth_probe(problem, options, checks);
+  if (stick_rows && rule == StickRule::Always) compare_held_smooth_probe(problem, options, checks);
+  if (stick_rows && rule != StickRule::Always) compare_stick_switch(problem, options, checks);
   if (pressurised)
     compare_inflated_dome(problem, options, checks);
   else if (!smooth)

@@ -198,14 +198,21 @@ TEST(FiniteElementSphereTippedEnergy, ForceIsTheDerivativeOfTheStoredEnergy) {
   }
 }
 
-// Held, the elements follow the membrane where it touched (tests/fe/held_smooth_probe_test.cpp);
-// under a gas pressure they are frictionless only: the held contact is invalid input there.
-TEST(FiniteElementSphereTippedInput, RefusesTheHeldContactUnderPressure) {
+// Held, the elements follow the membrane where it touched (tests/fe/held_smooth_probe_test.cpp),
+// also under a held gas pressure, from their own dome (tests/fe/held_pressure_test.cpp); held at
+// the sharp flat punch's edge under a gas pressure they are invalid input.
+TEST(FiniteElementSphereTippedInput, TakesTheHeldContactUnderPressureOnTheProbeOnly) {
   Problem p = sphere_problem(2.0, Gent{125.0});
-  p.preload.pressure_mpa = 1e-3;
-  EXPECT_THROW(fe_solve_at_depth(p, 5.0, FeContact::Held), InvalidInput);
+  p.preload.pressure_mpa = 3e-4;
+  FeOptions coarse;
+  coarse.elements = 16;
+  const FeState held = fe_solve_at_depth(p, 2.0, FeContact::Held, coarse);
+  EXPECT_TRUE(held.ok()) << held.message;
+  EXPECT_EQ(held.contact, FeContact::Held);
+  p.indenter = FlatPunch{2.0};
   try {
-    fe_solve_at_depth(p, 5.0, FeContact::Held);
+    fe_solve_at_depth(p, 2.0, FeContact::Held, coarse);
+    ADD_FAILURE() << "the held punch's edge under a gas pressure was accepted";
   } catch (const InvalidInput& e) {
     ASSERT_FALSE(e.errors().empty());
     EXPECT_EQ(e.errors().front().parameter, "preload.pressure_mpa");
