@@ -307,5 +307,43 @@ TEST(ConeKinkPivot, HeldConePuncturesAtTheKink) {
   }
 }
 
+// The Coulomb rule at a held kink (pre-stretched, L0 = 1.2, mu = 4: the cap's points hold, the
+// kink does not for long): the kink needs mu >= |ln(s1+ / s1-)| / (phi - phi_t) (the capstan law
+// over the angle it is wrapped), and the rule releases on the pivot, where that ratio reaches mu
+// (the held ratio at the switch is mu to 1e-6, the cap's own largest ratio below it).
+TEST(ConeKinkPivot, CoulombReleasesWhereTheKinksCapstanRatioReachesMu) {
+  Problem p = held_cone(30.0, 0.5);
+  p.preload.prestretch = 1.2;
+  p.friction = 4.0;
+  p.stick = {StickRule::Coulomb, 0.0};
+  const auto boundary = stick_slip_boundary(p);
+  ASSERT_TRUE(boundary.ok()) << boundary.message;
+  ASSERT_TRUE(boundary.switches);
+  const auto shooting = cone_shooting(p, SolverOptions{});
+  const auto pivot = shooting.contact().kink_pivot();
+  ASSERT_TRUE(pivot.follows());
+  const double f = boundary.force_stuck_n / solver_scales(p).force_n;
+  EXPECT_GT(f, pivot.kink().f);
+  const auto sol = shooting.solve(Stage::Stick, f);
+  ASSERT_TRUE(sol.ok()) << sol.message;
+  const auto st = shooting.contact().free_start(Configuration::Stick, f, sol.parameter);
+  ASSERT_TRUE(st);
+  const double kink = pivot.kink_ratio(*st);
+  const double capstan = std::log(st->ratio) / (st->slope - pivot.slope_of(pivot.kink_parameter()));
+  EXPECT_NEAR(kink, capstan, 1e-12 * capstan);
+  EXPECT_NEAR(sol.held_traction_ratio, p.friction, 1e-6 * p.friction);
+  EXPECT_NEAR(kink, p.friction, 1e-6 * p.friction);
+  const double cap = shooting.contact().held_profile_history().held_ratio(pivot.kink().r);
+  EXPECT_LT(cap, p.friction);
+  std::cout << fmt::format(
+      "coulomb mu 4, L0 1.2: released on the pivot at {:.4f} mm, {:.5f} N (exit {:.4f} rad, "
+      "s1+/s1- {:.4f}); the cap's largest ratio {:.4f}\n",
+      boundary.depth_mm,
+      boundary.force_stuck_n,
+      st->slope,
+      st->ratio,
+      cap);
+}
+
 }  // namespace cone_kink_pivot_test
 }  // namespace puncture::detail
