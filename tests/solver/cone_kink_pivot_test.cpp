@@ -345,5 +345,44 @@ TEST(ConeKinkPivot, CoulombReleasesWhereTheKinksCapstanRatioReachesMu) {
       cap);
 }
 
+// The held loading curve (depth control, 200 points) crosses the kink without a switch: force
+// and exit slope grow with the depth, the exit slope stays the flank's up to the kink's depth and
+// steepens past it, and the curve ends at the puncture, its points on the held states at a force
+// (each point's depth from its force to 1e-7 relative: the depth Newton and the force shooting
+// agree across the kink).
+TEST(ConeKinkPivot, HeldCurveCrossesTheKink) {
+  const Problem p = held_cone(30.0, 0.2);
+  const auto curve = loading_curve(p);
+  ASSERT_TRUE(curve.ok()) << curve.message;
+  const auto shooting = cone_shooting(p, SolverOptions{});
+  const double kink_depth =
+      shooting.contact().kink_pivot().kink().depth * solver_scales(p).length_mm;
+  const double flank = test::kHalfPi - 30.0 * test::kPi / 180.0;
+  int before = 0, past = 0;
+  for (std::size_t k = 1; k < curve.points.size(); ++k) {
+    const auto& q = curve.points[k];
+    EXPECT_EQ(q.stage, Stage::Stick);
+    EXPECT_GT(q.force_n, curve.points[k - 1].force_n) << k;
+    EXPECT_GE(q.corner_slope_rad, curve.points[k - 1].corner_slope_rad - 1e-12) << k;
+    if (q.depth_mm < kink_depth * (1.0 - 1e-6) && q.corner_slope_rad >= flank - 1e-12) {
+      EXPECT_NEAR(q.corner_slope_rad, flank, 1e-9) << k;
+      ++before;
+    }
+    if (q.depth_mm > kink_depth * (1.0 + 1e-6)) {
+      EXPECT_GT(q.corner_slope_rad, flank) << k;
+      ++past;
+      if (k % 20 == 0) {
+        const auto e = solve_at_force(p, q.force_n, Stage::Stick);
+        ASSERT_TRUE(e.ok()) << e.message;
+        EXPECT_NEAR(e.depth_mm, q.depth_mm, 1e-7 * q.depth_mm) << k;
+      }
+    }
+  }
+  EXPECT_GT(before, 3);
+  EXPECT_GT(past, 100);
+  EXPECT_NEAR(
+      curve.points.back().depth_mm, curve.puncture.depth_mm, 1e-9 * curve.puncture.depth_mm);
+}
+
 }  // namespace cone_kink_pivot_test
 }  // namespace puncture::detail
