@@ -45,7 +45,7 @@ namespace puncture::detail {
 enum class HeldProfileEnd {
   CylinderSide,  // the equator, then the cylinder (the filleted punch, the sphere-tipped probe)
   Neck,          // the ball's equator: past it the membrane would neck above the ball
-  Kink,          // the cone's kink onto the shank
+  Kink,          // the cone's kink onto the shank (then the pivot over it, held_kink_pivot.hpp)
 };
 
 // The probe's profile in the held membrane's coordinate psi (lengths / (A / L0)).

@@ -42,6 +42,7 @@
 #include "indentation/contact/contact_model.hpp"
 #include "indentation/contact/fillet_face_under_gas.hpp"
 #include "indentation/contact/flat_punch_side.hpp"
+#include "indentation/contact/held_kink_pivot.hpp"
 #include "indentation/contact/profile_stick.hpp"
 #include "indentation/free_part.hpp"
 #include "indentation/membrane_fields.hpp"
@@ -200,6 +201,8 @@ class SphereTippedContact {
   // The stick stage's history (contact/profile_stick.hpp; built on first use, shared by copies
   // of the contact).
   const ProfileStickHistory<Law>& held_profile_history() const { return *held_profile_; }
+  // Past that history's end at the cone's kink: the held membrane pivoting over it.
+  HeldKinkPivot<Law> kink_pivot() const { return {*held_profile_, law_}; }
 
   // The pole stretch exceeds 1 (and 1 / R_c held); held on the fillet's face under a gas
   // pressure the parameter is a line tension t > 0, as on the sharp punch's held face.
@@ -458,6 +461,7 @@ class SphereTippedContact {
       if (s_.mu != 0.0) return std::nullopt;  // the ball and the cone: no side (a status)
       return side_top_start(f, p);
     }
+    if (c == Configuration::Stick && kink_pivot().pivoting(p)) return kink_pivot().start(p, f);
     if (c == Configuration::Stick)
       return held_on_face(f) ? held_face_start(f, p) : held_profile_->edge_start(1.0 / p, f);
     if (c != Configuration::SlipWithoutPartTwo) return std::nullopt;
@@ -489,6 +493,7 @@ class SphereTippedContact {
         attach_held_fillet_face(*held_profile_, law_, st, record, sol);
       else
         attach_held_profile(*held_profile_, law_, st, record, sol);
+      if (kink_pivot().pivoting(p)) kink_pivot().attach(st, record, sol);
       // The pole holds as it touched (the dome's pole stretch under a gas pressure).
       sol.part_three_stretch = held_profile_->first_touch_stretch();
       return true;
@@ -543,7 +548,7 @@ class SphereTippedContact {
     plan.configuration = Configuration::SlipWithoutPartTwo;
     if (stage == Stage::Stick && held_on_face(f))
       return held_face_tension_plan(*held_profile_->face_map(), f, pressure_, counted);
-    if (stage == Stage::Stick) return held_profile_plan(*held_profile_, f, counted);
+    if (stage == Stage::Stick) return held_plan(f, counted);
     if (fillet_face().on_face(f))  // under a gas pressure, the fillet's face alone
       return bracket_from_below(counted,
                                 Configuration::SlipWithoutPartTwo,
@@ -1205,6 +1210,18 @@ class SphereTippedContact {
     const auto l1 = invert_radial_stress(law_, t / *r, l2);
     if (!l1 || !(first_invariant(*l1, l2) < locking_i1_)) return std::nullopt;
     return FreeStart{{t, *l1, l2, 0.0}, *r, 0.0, 1.0};
+  }
+  // The stick stage's plan: the held profile's, then on the cone the pivot over the kink (from the
+  // kink's force, or just below it where the history's last interval does not bracket the root).
+  template <class Residual>
+  ShootingPlan held_plan(double f, Residual& counted) const {
+    const auto pivot = kink_pivot();
+    if (!pivot.follows()) return held_profile_plan(*held_profile_, f, counted);
+    const auto& p = held_profile_->points();
+    if (!(f < pivot.kink().f)) return pivot.plan(counted);
+    auto plan = held_profile_plan(*held_profile_, f, counted);
+    if (!plan.ok() && f > p[p.size() - 2].f) return pivot.plan(counted);
+    return plan;
   }
   HeldProfile held_profile() const {
     return {.arc = arc(),
