@@ -67,13 +67,15 @@ inline Eigen::VectorXd arc_unknowns(const ScaledSolution& s) {
 }
 
 // Arc length in units of the path's last state's (depth, force): steps of 2 % of them at first,
-// at most 20 %; the corrector to 1e-2 of the shooting tolerance (as branch_state_at_force).
+// at most 20 %; the corrector to 1e-1 of the shooting tolerance (1e-2 of it, as
+// branch_state_at_force aims for, is the clamp residual's noise: a corrector at some arc lengths
+// then stalled above it).
 inline ArclengthSettings fold_arclength_settings(double shooting_tol) {
   ArclengthSettings s;
   s.initial_step = 0.02;
   s.max_step = 0.2;
   s.min_step = 1e-6;
-  s.tolerance = 1e-2 * shooting_tol;
+  s.tolerance = 1e-1 * shooting_tol;
   return s;
 }
 

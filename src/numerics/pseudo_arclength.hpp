@@ -2,7 +2,7 @@
 // Pseudo-arclength continuation of a curve G(y) = 0, G: R^(n+1) -> R^n (Keller): a predictor
 // along the unit tangent, then Newton on the bordered system [G(y); t.W(y - y0) - ds] = 0, whose
 // matrix [J; t^T W] stays regular through a turning point of any one coordinate (where [J] with
-// that coordinate held fixed is singular).  The Jacobian is taken by forward differences; the
+// that coordinate held fixed is singular).  The Jacobian is taken by central differences; the
 // arc length is measured in a diagonal metric W (coordinates weighted by 1 / scale^2, zero to
 // leave one out).  Step control: a step whose corrector fails, or whose tangent turns by more
 // than kMaxTurn, is halved (down to min_step); one that converges in few iterations grows.
@@ -52,19 +52,21 @@ class PseudoArclength {
 
   double step() const { return step_; }
 
-  // The Jacobian of G at y (residual g there), by forward differences; empty where an
+  // The Jacobian of G at y (g: the residual there), by central differences (forward ones moved
+  // the tangent's zero, hence a fold's force, by half a difference step); empty where an
   // evaluation fails.
   std::optional<Eigen::MatrixXd> jacobian(const Eigen::VectorXd& y,
                                           const Eigen::VectorXd& g) const {
     const Eigen::VectorXd scale = system_.scale();
     Eigen::MatrixXd j(g.size(), y.size());
     for (int k = 0; k < y.size(); ++k) {
-      Eigen::VectorXd yk = y;
+      Eigen::VectorXd hi = y, lo = y;
       const double h = settings_.difference_step * scale[k];
-      yk[k] += h;
-      const auto gk = system_.residual(yk);
-      if (!gk) return std::nullopt;
-      j.col(k) = (*gk - g) / h;
+      hi[k] += h;
+      lo[k] -= h;
+      const auto g_hi = system_.residual(hi), g_lo = system_.residual(lo);
+      if (!g_hi || !g_lo) return std::nullopt;
+      j.col(k) = (*g_hi - *g_lo) / (2.0 * h);
     }
     return j;
   }
