@@ -18,7 +18,8 @@ void add_curve_options(CLI::App& app, CurveFlags& f) {
                  f.points,
                  "Number of equally spaced points of the curve [count] (2 to\n"
                  "100000): depths from zero to the end ('curve'), or pole\n"
-                 "stretches from flat to the end ('inflate')")
+                 "stretches from flat to the end ('inflate'); a curve that snaps\n"
+                 "through at a fold has as many again after it")
       ->group(kCurve)
       ->check(CLI::Range(2, 100000).description(""))
       ->capture_default_str();
