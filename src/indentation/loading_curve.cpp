@@ -188,12 +188,13 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
   return detail::reporting_failures<LoadingCurve>([&] {
     // Where a later inflated state's path turns back before the puncture: the snap-through.
     std::optional<CurveEvent> snap;
+    std::vector<double> after_snap;  // the curve's depths past it (to max_depth_mm)
     auto out = detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       auto followed = detail::curve_to_puncture(p, shooting, curve, options);
       if (!followed.ok() && followed.puncture.status == Status::LimitLoad) {
         LoadingCurve to_fold;
         to_fold.puncture = followed.puncture;
-        snap = detail::curve_to_fold(p, shooting, curve, options, to_fold);
+        snap = detail::curve_to_fold(p, shooting, curve, options, to_fold, after_snap);
         if (snap) {
           to_fold.status = Status::Converged;
           return to_fold;
@@ -206,7 +207,7 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
     add_events(p, curve, options, out);
     if (snap) {
       out.events.push_back(*snap);
-      detail::land_after_snap(p, curve, options, out);
+      detail::land_after_snap(p, curve, options, after_snap, out);
     }
     return out;
   });

@@ -37,7 +37,7 @@ CurvePoint landing_point(const Equilibrium& e, double depth_mm) {
 }  // namespace
 
 void land_after_snap(const Problem& p, const CurveOptions& curve, const SolverOptions& options,
-                     LoadingCurve& out) {
+                     const std::vector<double>& after, LoadingCurve& out) {
   const std::size_t at = out.events.size() - 1;  // the SnapThrough
   const double fold_mm = out.events[at].depth_mm, force_before = out.events[at].force_n;
   Problem first = p;
@@ -69,7 +69,14 @@ void land_after_snap(const Problem& p, const CurveOptions& curve, const SolverOp
   CurveOptions rest_options;
   rest_options.points = curve.points;
   rest_options.locate_events = curve.locate_events;
-  const LoadingCurve rest = loading_curve(first, rest_options, options);
+  // To max_depth_mm: the grid's depths past the fold where the probe touches the first state
+  // (those short of it are the free dome's, at force 0).
+  for (const double d : after)
+    if (d > offset) rest_options.depths_mm.push_back(d - offset);
+  // Nothing of the first state's curve when every depth past the fold leaves the probe clear.
+  const bool touches = after.empty() || !rest_options.depths_mm.empty();
+  const Equilibrium free_dome = solve_at_depth(first, 0.0, Stage::Slip, quiet);
+  const LoadingCurve rest = touches ? loading_curve(first, rest_options, options) : LoadingCurve{};
   CurveEvent& snap = out.events[at];
   snap.force_after_n = landing_depth > 0.0 ? landing.force_n : 0.0;
   if (landing_depth <= 0.0) snap.end_depth_mm = offset;
@@ -90,21 +97,38 @@ void land_after_snap(const Problem& p, const CurveOptions& curve, const SolverOp
           : fmt::format("indented {} mm: the force drops to {} N",
                         landing_num(landing_depth),
                         landing_num(landing.force_n)));
-  if (!rest.ok()) {
+  if (touches && !rest.ok()) {
     out.status = rest.status;
     out.message = fmt::format("{}; the first inflated state's curve from there fails: {}",
                               snap.description,
                               rest.message);
     return;
   }
-  if (landing_depth <= 0.0 && !rest.points.empty())
-    landing = rest.points.front();  // the first state's dome, clear of the probe
+  if (landing_depth <= 0.0) {
+    if (!free_dome.ok()) {
+      out.status = free_dome.status;
+      out.message = fmt::format(
+          "{}; the first inflated state's dome: {}", snap.description, free_dome.message);
+      return;
+    }
+    landing = landing_point(free_dome, fold_mm);  // clear of the probe
+  }
   landing.depth_mm = fold_mm;
   out.points.push_back(landing);
+  for (const double d : after)
+    if (d <= offset) {  // the probe above the first state's pole
+      CurvePoint clear = landing;
+      clear.depth_mm = d;
+      out.points.push_back(clear);
+    }
   for (CurvePoint pt : rest.points) {
     pt.depth_mm += offset;
     if (pt.depth_mm > fold_mm) out.points.push_back(pt);
   }
+  out.failure_verdict = failure_verdict(p, out);
+  out.status = Status::Converged;
+  out.message.clear();
+  if (!touches) return;  // the puncture search's answer stays
   for (CurveEvent e : rest.events) {
     e.depth_mm += offset;
     if (e.end_depth_mm) *e.end_depth_mm += offset;

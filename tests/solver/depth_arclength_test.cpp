@@ -187,7 +187,7 @@ TEST(DepthArclength, TheMiddleInflatedStateIsFollowedThroughItsFold) {
 
 // The curve of the middle state to puncture: the grid to the fold, the snap-through there onto
 // the first inflated state, clear of the probe (its pole 18.89 mm below), and that state's own
-// curve to its puncture, shifted by the poles' heights' difference.
+// curve to its puncture, shifted by the poles' heights' difference; and to a depth past the fold.
 TEST(DepthArclength, TheMiddleStatesCurveSnapsThroughToTheFirstState) {
   Problem p = pressurised(9e-4, 0.18, SphereTipped{2.0});
   p.preload.inflated_state = 2;
@@ -232,6 +232,32 @@ TEST(DepthArclength, TheMiddleStatesCurveSnapsThroughToTheFirstState) {
   EXPECT_NEAR(
       curve.points.back().depth_mm, curve.puncture.depth_mm, 1e-9 * curve.puncture.depth_mm);
   record("middle_state_curve_puncture_depth_mm", curve.puncture.depth_mm);
+
+  // To a depth past the fold (--max-depth): the grid's depths short of the fold, the fold, the
+  // landing, then the grid's deeper depths: force 0 while the probe is above the first state's
+  // pole, that state's own force beyond (solved alone at the shifted depth).
+  CurveOptions to_depth;
+  to_depth.points = 12;
+  to_depth.max_depth_mm = 30.0;
+  const LoadingCurve partial = loading_curve(p, to_depth);
+  ASSERT_TRUE(partial.ok()) << partial.message;
+  ASSERT_EQ(partial.points.size(), 14u);
+  EXPECT_EQ(partial.points[0].depth_mm, 0.0);
+  EXPECT_EQ(partial.points[1].depth_mm, snap->depth_mm);
+  EXPECT_EQ(partial.points[2].force_n, 0.0);
+  for (int k = 1; k < 12; ++k) {
+    const CurvePoint& q = partial.points[static_cast<std::size_t>(k) + 2];
+    EXPECT_NEAR(q.depth_mm, 30.0 * k / 11, 1e-12);
+    if (q.depth_mm <= offset_mm) {
+      EXPECT_EQ(q.force_n, 0.0);
+      continue;
+    }
+    const Equilibrium alone_at = solve_at_depth(first, q.depth_mm - offset_mm, Stage::Slip);
+    ASSERT_TRUE(alone_at.ok()) << alone_at.message;
+    // (The curve's points converge to curve_tol, 1e-9, the solve to its own: 1.6e-9 apart at
+    // 21.8 mm.)
+    EXPECT_NEAR(q.force_n, alone_at.force_n, 1e-8 * alone_at.force_n);
+  }
 }
 
 // Constant pressure, frictionless: dPi/d(depth) = F on the branch beyond the fold (Pi = U - p V,
