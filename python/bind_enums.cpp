@@ -30,6 +30,9 @@ void bind_enums(py::module_& m) {
       .value("ContactShrinks",
              CurveEventKind::ContactShrinks,
              "the contact's edge moves back towards the tip as the probe goes deeper")
+      .value("SnapThrough",
+             CurveEventKind::SnapThrough,
+             "the depth turns back (a fold): depth control snaps through to another state")
       .def_property_readonly("token", [](CurveEventKind k) { return to_token(k); })
       .def_property_readonly("description", [](CurveEventKind k) { return to_string(k); });
 

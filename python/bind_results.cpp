@@ -242,6 +242,9 @@ void bind_results(py::module_& m) {
                     &CurveEvent::contact_reach_mm,
                     "the contact edge's radius plus its height above the tip [mm]")
       .def_readonly("depth_uncertainty_mm", &CurveEvent::depth_uncertainty_mm)
+      .def_readonly("force_after_n",
+                    &CurveEvent::force_after_n,
+                    "snap-through: the landing state's force at that depth [N]; else None")
       .def_readonly("description", &CurveEvent::description)
       .def("__repr__", [](const CurveEvent& e) {
         return fmt::format("<CurveEvent {} at depth_mm={:.6g}, force_n={:.6g}>",
@@ -322,7 +325,12 @@ void bind_results(py::module_& m) {
                     "it are not the membrane's states); None otherwise")
       .def_readonly("events",
                     &LoadingCurve::events,
-                    "force maxima and a shrinking contact (list of CurveEvent)")
+                    "force maxima, a shrinking contact and a snap-through at a fold of the "
+                    "depth (list of CurveEvent)")
+      .def_readonly("beyond_fold",
+                    &LoadingCurve::beyond_fold,
+                    "past a fold of the depth: the branch followed by arc length (list of "
+                    "CurvePoint, the depth falling); empty otherwise")
       .def_readonly("failure_verdict",
                     &LoadingCurve::failure_verdict,
                     "a pre-tensioned membrane: which failure comes first (FailureVerdict), else "

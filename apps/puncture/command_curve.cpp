@@ -18,7 +18,9 @@ void add_curve_options(CLI::App& app, CurveFlags& f) {
                  f.points,
                  "Number of equally spaced points of the curve [count] (2 to\n"
                  "100000): depths from zero to the end ('curve'), or pole\n"
-                 "stretches from flat to the end ('inflate')")
+                 "stretches from flat to the end ('inflate'); a curve to puncture\n"
+                 "that snaps through at a fold has as many again after it (to\n"
+                 "--max-depth: 2 more, the fold and the landing)")
       ->group(kCurve)
       ->check(CLI::Range(2, 100000).description(""))
       ->capture_default_str();

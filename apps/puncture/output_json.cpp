@@ -139,18 +139,23 @@ json curve_json(const CurveReport& r) {
   // Written only when there are any (docs/model.md §8.1).
   if (!c.events.empty()) {
     json events = json::array();
-    for (const CurveEvent& e : c.events)
-      events.push_back(
-          {{"kind", to_token(e.kind)},
-           {"depth_mm", finite(e.depth_mm, "event depth")},
-           {"force_n", finite(e.force_n, "event force")},
-           {"end_depth_mm",
-            e.end_depth_mm ? json(finite(*e.end_depth_mm, "event end depth")) : json(nullptr)},
-           {"contact_reach_mm", finite(e.contact_reach_mm, "contact reach")},
-           {"depth_uncertainty_mm", finite(e.depth_uncertainty_mm, "event depth uncertainty")},
-           {"description", e.description}});
+    for (const CurveEvent& e : c.events) {
+      json event = {
+          {"kind", to_token(e.kind)},
+          {"depth_mm", finite(e.depth_mm, "event depth")},
+          {"force_n", finite(e.force_n, "event force")},
+          {"end_depth_mm",
+           e.end_depth_mm ? json(finite(*e.end_depth_mm, "event end depth")) : json(nullptr)},
+          {"contact_reach_mm", finite(e.contact_reach_mm, "contact reach")},
+          {"depth_uncertainty_mm", finite(e.depth_uncertainty_mm, "event depth uncertainty")},
+          {"description", e.description}};
+      if (e.force_after_n) event["force_after_n"] = finite(*e.force_after_n, "force after");
+      events.push_back(event);
+    }
     out["events"] = events;
   }
+  // The branch past a fold of the depth, followed by arc length (docs/model.md §8.1).
+  if (!c.beyond_fold.empty()) out["beyond_fold"] = rows_json(curve_table(c.beyond_fold));
   if (c.failure_verdict) out["failure_verdict"] = failure_verdict_json(*c.failure_verdict);
   // A flat punch under a gas pressure with friction: the points before it are not the membrane's
   // states (its face slides inward there).

@@ -262,7 +262,9 @@ void add_problem_options(CLI::App& app, ProblemFlags& f) {
                      "stiffest) or k >= 1, the k-th in order of pole stretch ('puncture\n"
                      "inflate --pressure P' lists them).  The first is indented also\n"
                      "beyond a hemisphere (overhanging its clamp); a later one that\n"
-                     "overhangs is not (exit 2)")
+                     "overhangs is followed in depth from its own dome, and where its\n"
+                     "path turns back (a fold: the unstable middle state) the curve\n"
+                     "snaps through onto the first state (docs/model.md 8.1)")
           ->group(kGeometry)
           ->capture_default_str();
   f.gas_volume_option =

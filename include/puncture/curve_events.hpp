@@ -2,8 +2,7 @@
 // What happens along a loading curve besides its points: a force maximum (where force control
 // snaps through), the contact shrinking as the probe goes deeper, and, for a pre-tensioned
 // membrane, which failure comes first (docs/model.md §8.1).  A fold of the depth (where depth
-// control would snap back) is not detected: the curve is followed in depth control only, and
-// where no state exists at a depth it fails with a status.
+// control snaps through) is a SnapThrough; the branch beyond it is LoadingCurve::beyond_fold.
 #include <optional>
 #include <string>
 
@@ -16,6 +15,10 @@ enum class CurveEventKind {
   // The contact (the probe's outline covered by the membrane) shrinks as the probe goes deeper:
   // its edge moves back towards the tip.
   ContactShrinks,
+  // The depth turns back (a fold of the path, dDepth/dF = 0): under depth control the membrane
+  // snaps through at that depth to another state (force_after_n); under force control the path
+  // passes the fold (the force keeps rising).
+  SnapThrough,
 };
 
 std::string to_string(CurveEventKind kind);
@@ -30,8 +33,12 @@ struct CurveEvent {
   double force_n = 0.0;
   // ForceMaximum: the deeper depth where the curve carries this force again (force control's
   // snap-through lands there) [mm]; empty if the curve ends before.  ContactShrinks: where the
-  // contact grows again [mm]; empty if it shrinks to the end of the curve.
+  // contact grows again [mm]; empty if it shrinks to the end of the curve.  SnapThrough: where
+  // the probe touches the landing state again, if it left it [mm].
   std::optional<double> end_depth_mm;
+  // SnapThrough: the force of the state the membrane lands on at depth_mm [N] (0: the probe
+  // left the membrane).
+  std::optional<double> force_after_n;
   // The contact's reach at depth_mm [mm]: the contact edge's current radius plus its height
   // above the tip (grows along every probe's outline).
   double contact_reach_mm = 0.0;

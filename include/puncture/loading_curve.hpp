@@ -101,6 +101,10 @@ struct LoadingCurve : Outcome {
   // Force maxima (snap-through under force control) and a shrinking contact along the curve,
   // in order of depth (docs/model.md §8.1).
   std::vector<CurveEvent> events;
+  // Where depth control snaps through at a fold of the depth (a SnapThrough event): the branch
+  // past the fold, followed by arc length, the depth falling as the force rises (states of the
+  // model that depth control does not reach), from the fold on (docs/model.md §8.1).
+  std::vector<CurvePoint> beyond_fold;
   // A pre-tensioned membrane (pressure, sealed gas or pre-stretch): which failure comes first,
   // local puncture at the probe or a global one.  Empty for a membrane mounted stress-free.
   std::optional<FailureVerdict> failure_verdict;

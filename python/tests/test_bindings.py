@@ -495,6 +495,29 @@ def test_curve_events_and_failure_verdict_match_cli(cli):
     assert pu.CurveEventKind.ForceMaximum.token == "force_maximum"
 
 
+def test_middle_inflated_state_snaps_through_at_its_fold(cli):
+    # The unstable middle state at 0.9 kPa (docs/model.md §8.1, "Following a fold"): its depth
+    # turns back at 0.025 mm, the membrane lands on the first state (the probe leaves it), and the
+    # branch past the fold is followed by arc length, as the CLI's JSON says.
+    problem = pu.Problem(indenter=pu.SphereTipped(radius_mm=2.0),
+                         preload=pu.Preload(pressure_mpa=9e-4, inflated_state=2))
+    curve = pu.loading_curve(problem, points=20)
+    assert curve.ok
+    snap = curve.events[0]
+    assert snap.kind == pu.CurveEventKind.SnapThrough
+    assert snap.kind.token == "snap_through"
+    assert abs(snap.depth_mm - 0.025355) < 1e-6
+    assert snap.force_after_n == 0.0
+    assert all(b.depth_mm < a.depth_mm for a, b in zip(curve.beyond_fold, curve.beyond_fold[1:]))
+    from_cli = cli.json("curve", "--points", "20", "--indenter", "sphere-tipped",
+                        "--pressure", "9e-4", "--inflated-state", "2")
+    event = from_cli["curve"]["events"][0]
+    assert event["kind"] == "snap_through"
+    assert rel(event["depth_mm"], snap.depth_mm) < 1e-12
+    assert len(from_cli["curve"]["beyond_fold"]) == len(curve.beyond_fold)
+    assert rel(curve.puncture.force_n, from_cli["puncture"]["force_n"]) < 1e-12
+
+
 def test_puncture_failure_verdict_is_the_curves_and_the_clis(cli):
     # predict_puncture gives the loading curve's verdict when asked (SolverOptions.failure_verdict)
     # and the `puncture` command's JSON writes it; none for a membrane mounted stress-free.

@@ -18,6 +18,8 @@ std::string to_string(CurveEventKind kind) {
       return "force maximum";
     case CurveEventKind::ContactShrinks:
       return "contact shrinks";
+    case CurveEventKind::SnapThrough:
+      return "snap-through at a fold of the depth";
   }
   return "unknown";
 }
@@ -28,6 +30,8 @@ std::string to_token(CurveEventKind kind) {
       return "force_maximum";
     case CurveEventKind::ContactShrinks:
       return "contact_shrinks";
+    case CurveEventKind::SnapThrough:
+      return "snap_through";
   }
   return "unknown";
 }

@@ -65,6 +65,29 @@ constexpr bool noisy_near_zero_load() {
     return false;
 }
 
+// The curve's point of state `sol` at `depth_mm` in `stage`.
+template <class Contact>
+CurvePoint curve_point_of(const Problem& p, const Contact& contact, const ScaledSolution& sol,
+                          Stage stage, double depth_mm) {
+  const SolverScales units = solver_scales(p);
+  CurvePoint pt;
+  pt.depth_mm = depth_mm;
+  pt.force_n = sol.f * units.force_n;
+  pt.normalized_force = units.normalized_force(sol.f);
+  pt.stage = stage;
+  pt.configuration = sol.configuration;
+  pt.part_three_stretch = sol.part_three_stretch;
+  pt.part_two_length_mm = sol.part_two_length * units.length_mm;
+  pt.corner_slope_rad = sol.corner_slope;
+  if (sol.configuration != Configuration::Unloaded) {
+    pt.contact_edge_radius_mm = sol.edge_radius * units.length_mm;
+    pt.contact_edge_height_mm = contact.free_part_inner_height(sol) * units.length_mm;
+  }
+  pt.max_first_invariant = max_first_invariant_of(sol);
+  pt.beyond_puncture = any_exceeded(p, contact, sol);
+  return pt;
+}
+
 // Fills out.points along the depth grid; false (with out.status/message) on failure.
 // `change`: where the sliding configuration changes (the contact model's slip_change), if it does.
 // Where that search found none and a point fails past a change, the change is found from the
@@ -193,22 +216,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     last_contact_q.reset();
     if (shooting.control_of(sol->configuration) == DepthControl::Contact)
       last_contact_q = depth_unknown(DepthControl::Contact, *sol);
-    CurvePoint pt;
-    pt.depth_mm = depth;
-    pt.force_n = sol->f * scale;
-    pt.normalized_force = units.normalized_force(sol->f);
-    pt.stage = stage;
-    pt.configuration = sol->configuration;
-    pt.part_three_stretch = sol->part_three_stretch;
-    pt.part_two_length_mm = sol->part_two_length * big_a;
-    pt.corner_slope_rad = sol->corner_slope;
-    if (sol->configuration != Configuration::Unloaded) {
-      pt.contact_edge_radius_mm = sol->edge_radius * big_a;
-      pt.contact_edge_height_mm = contact.free_part_inner_height(*sol) * big_a;
-    }
-    pt.max_first_invariant = max_first_invariant_of(*sol);
-    pt.beyond_puncture = any_exceeded(p, contact, *sol);
-    out.points.push_back(pt);
+    out.points.push_back(curve_point_of(p, contact, *sol, stage, depth));
     return true;
   };
   const bool given = !curve.depths_mm.empty();

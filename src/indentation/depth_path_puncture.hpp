@@ -33,6 +33,9 @@ struct DepthPathResult {
   std::optional<ScaledSolution> peak;
   // Where the states end because the depth turns back (depth_fold.hpp), the located fold.
   std::optional<DepthFold> fold;
+  // ... and the deepest state depth control reached past `state` on the way to it (the start of
+  // the continuation through the fold, depth_arclength.hpp).
+  std::optional<ScaledSolution> deepest;
 };
 
 // The steps in normalised depth (/ A): 1 % of the clamp radius, 0.25 mm on the paper's membrane,
@@ -243,7 +246,10 @@ DepthPathResult puncture_along_depth(const Shooting& shooting, Excess&& excess) 
     if (!next || !next->ok()) {
       out.end = DepthPathEnd::StatesEnd;
       // Depth control got deeper than `last` (to `from`) in its configuration: a fold there?
-      if (from.depth > last.depth) out.fold = depth_fold_after(shooting, last, from);
+      if (from.depth > last.depth) {
+        out.fold = depth_fold_after(shooting, last, from);
+        if (out.fold) out.deepest = from;
+      }
       out.state = std::move(last);
       return out;
     }

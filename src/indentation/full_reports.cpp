@@ -67,8 +67,9 @@ void events_lines(std::string& out, const LoadingCurve& c) {
     return;
   }
   for (const CurveEvent& e : c.events) {
-    const char* label =
-        e.kind == CurveEventKind::ForceMaximum ? "SNAP-THROUGH (force)" : "CONTACT SHRINKS";
+    const char* label = e.kind == CurveEventKind::ForceMaximum  ? "SNAP-THROUGH (force)"
+                        : e.kind == CurveEventKind::SnapThrough ? "SNAP-THROUGH (depth)"
+                                                                : "CONTACT SHRINKS";
     line(out, label, e.description);
   }
 }
@@ -323,6 +324,14 @@ std::string full_report(const LoadingCurve& c, const Problem& p) {
   line(out, "stick -> slip switch", switch_text(c, p));
   line(out, "Part II appears", part_two_text(c, p));
   events_lines(out, c);
+  if (!c.beyond_fold.empty())
+    line(out,
+         "beyond the fold",
+         fmt::format("{} states past the fold followed by arc length (not reached under depth "
+                     "control): the depth falls to {} mm as the force rises to {} N",
+                     c.beyond_fold.size(),
+                     num(c.beyond_fold.back().depth_mm),
+                     num(c.beyond_fold.back().force_n)));
   out += full_report(c.puncture);
   if (c.failure_verdict) line(out, "fails first", failure_verdict_text(*c.failure_verdict));
   const double end = c.points.empty() ? 0.0 : c.points.back().depth_mm;

@@ -9,12 +9,14 @@
 
 #include "indentation/curve_events.hpp"
 #include "indentation/curve_following.hpp"
+#include "indentation/curve_to_fold.hpp"
 #include "indentation/dispatch.hpp"
 #include "indentation/face_slip.hpp"
 #include "indentation/path_puncture.hpp"
 #include "indentation/puncture_search.hpp"
 #include "indentation/reported_failure.hpp"
 #include "indentation/sealed_gas.hpp"
+#include "indentation/snap_landing.hpp"
 
 namespace puncture {
 
@@ -184,13 +186,29 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
       return out;
     });
   return detail::reporting_failures<LoadingCurve>([&] {
+    // Where a later inflated state's path turns back before the puncture: the snap-through.
+    std::optional<CurveEvent> snap;
+    std::vector<double> after_snap;  // the curve's depths past it (to max_depth_mm)
     auto out = detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       auto followed = detail::curve_to_puncture(p, shooting, curve, options);
+      if (!followed.ok() && followed.puncture.status == Status::LimitLoad) {
+        LoadingCurve to_fold;
+        to_fold.puncture = followed.puncture;
+        snap = detail::curve_to_fold(p, shooting, curve, options, to_fold, after_snap);
+        if (snap) {
+          to_fold.status = Status::Converged;
+          return to_fold;
+        }
+      }
       followed.puncture = with_face_slip_checked(p, std::move(followed.puncture));
       followed.face_slides_outward_from_mm = face_outward_from(p, followed.points);
       return followed;
     });
     add_events(p, curve, options, out);
+    if (snap) {
+      out.events.push_back(*snap);
+      detail::land_after_snap(p, curve, options, after_snap, out);
+    }
     return out;
   });
 }

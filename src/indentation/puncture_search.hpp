@@ -386,7 +386,8 @@ PuncturePrediction puncture_followed_in_depth(const Problem& p, const SolverOpti
         "no puncture found on the loading path: followed in depth, the depth turns back at {:.8g} "
         "mm (within {:.2g} mm; {:.6g} N, the {} {:.6g}, critical {:g}): a fold of the path, where "
         "under depth control the membrane snaps through (its force drops at that depth) before "
-        "the criterion is met; the branch beyond the fold is not followed ({})",
+        "the criterion is met; the branch beyond the fold is not followed here (the loading curve "
+        "follows it and the snap-through) ({})",
         turn.depth * units.length_mm,
         path.fold->depth_uncertainty * units.length_mm,
         turn.f * units.force_n,
