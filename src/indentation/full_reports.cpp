@@ -28,6 +28,17 @@ std::string failure(const Outcome& o) {
 }
 
 std::string switch_text(const LoadingCurve& c, const Problem& p) {
+  // After a Coulomb release the model's own path is a partial slip that joins the held and
+  // the sliding branches continuously (docs/model.md §15.4); the curve jumps instead.
+  if (c.stick_slip.occurs && p.stick.rule == StickRule::Coulomb)
+    return fmt::format(
+        "at depth {} mm: force {} N (held) -> {} N (sliding); the curve jumps to full "
+        "sliding here, where the held edge needs |tau|/p = mu, an approximation: a partial "
+        "slip (a held core, a slipping annulus spreading from the edge to the pole) joins the "
+        "two branches without a jump and is not followed (docs/model.md, section 15.4)",
+        num(c.stick_slip.depth_mm),
+        num(c.stick_slip.force_stuck_n),
+        num(c.stick_slip.force_sliding_n));
   if (c.stick_slip.occurs)
     return fmt::format("at depth {} mm: force {} N (held) -> {} N (sliding)",
                        num(c.stick_slip.depth_mm),
