@@ -16,6 +16,7 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "indentation/dispatch.hpp"
@@ -395,6 +396,44 @@ TEST(PartialSlip, SmallFrictionSlidesAtOnceLargeReleasesLate) {
   // The rule's force search stops at its own tolerance (4e-5 of the depth measured there).
   EXPECT_NEAR(late->depth * units.length_mm, b.depth_mm, 1e-4 * b.depth_mm);
   EXPECT_GT(b.depth_mm, 10.0);
+}
+
+// States at given depths (what a loading curve asks for): the front found for the depth gives
+// it to 1e-9 mm, and against them the curve's approximation today, the sliding state at that
+// depth after the jump: above the partial slip by at most 0.6 % (mu = 1, just past the
+// release), the held branch above it by up to 6 %; beyond the family's end (the front at the
+// pole) no partial slip state: the sliding model's state is the model's there.
+TEST(PartialSlip, StatesAtGivenDepthsAndTheJumpsError) {
+  for (const auto& [mu, depths_mm] : std::vector<std::pair<double, std::vector<double>>>{
+           {0.5, {1.0, 2.0, 3.0}}, {1.0, {3.5, 6.0, 9.0, 12.0}}}) {
+    const PartialSlipSetup s(mu);
+    const auto units = solver_scales(s.problem);
+    double largest = 0.0;
+    for (const double depth_mm : depths_mm) {
+      const auto st = s.slip.state_at_depth(depth_mm / units.length_mm, s.release);
+      ASSERT_TRUE(st) << mu << " " << depth_mm;
+      EXPECT_NEAR(st->at_edge.depth * units.length_mm, depth_mm, 1e-9);
+      const auto sliding = s.shooting.solve_at_depth(Stage::Slip, st->at_edge.depth);
+      const auto held = s.shooting.solve_at_depth(Stage::Stick, st->at_edge.depth);
+      ASSERT_TRUE(sliding.ok() && held.ok());
+      const double jump_error = sliding.f / st->at_edge.f - 1.0;
+      largest = std::max(largest, std::abs(jump_error));
+      std::cout << fmt::format(
+          "mu {:.1f}, {:.1f} mm: front {:.4f} R_release, partial slip {:.7f} N, sliding {:.7f} N "
+          "({:+.3f} %), held {:.7f} N ({:+.3f} %)\n",
+          mu,
+          depth_mm,
+          st->front / s.release,
+          st->at_edge.f * units.force_n,
+          sliding.f * units.force_n,
+          100.0 * jump_error,
+          held.f * units.force_n,
+          100.0 * (held.f / st->at_edge.f - 1.0));
+      EXPECT_GE(held.f, st->at_edge.f * (1.0 - 1e-9));
+    }
+    EXPECT_LT(largest, 0.01) << mu;
+    EXPECT_FALSE(s.slip.state_at_depth(20.0 / units.length_mm, s.release)) << mu;
+  }
 }
 
 }  // namespace

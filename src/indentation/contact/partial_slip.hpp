@@ -21,6 +21,7 @@
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "indentation/contact/profile_stick.hpp"
@@ -48,6 +49,13 @@ class PartialSlip {
  public:
   // Annulus steps per history grid step (classical Runge-Kutta, O(h^4)).
   static constexpr int kStepsPerGridStep = 4;
+  // The fronts (/ the release edge) that bound a depth's search: just inside the release and
+  // near the pole.  Closer to the release the edge's root is lost in the held map's own clamp
+  // residual (~1e-10, its interpolation), the annulus's residual growing as 54 d^2 only; the
+  // depths skipped are within a few um of the release's (the held state stands for them).
+  static constexpr double kReleaseFront = 1.0 - 1e-3;
+  static constexpr double kPoleFront = 1e-3;
+  static constexpr double kStableStepFraction = 0.25;
 
   PartialSlip(const FreePart<Law>& part_one, const ProfileStickHistory<Law>& history, double mu)
       : part_one_(part_one), history_(history), mu_(mu) {}
@@ -74,14 +82,17 @@ class PartialSlip {
   std::optional<std::pair<double, double>> march(double r_s, double r) const {
     auto psi0 = history_.psi_at(r_s);
     auto l10 = history_.stretch_at(r_s);
-    if (!psi0 || !l10 || r < r_s) return std::nullopt;
+    if (!psi0 || !l10 || !(r_s > 0.0) || r < r_s) return std::nullopt;
     double psi = *psi0, l1 = *l10;
     const double span = r - r_s;
     const int n =
         std::max(1, static_cast<int>(std::ceil(span / history_.step() * kStepsPerGridStep)));
-    const double h = span / n;
-    for (int k = 0; k < n; ++k) {
-      const double x = r_s + k * h;
+    const double uniform = span / n;
+    double x = r_s;
+    while (x < r) {
+      // Near the pole the annulus is stiff (~ -3 / R, as the history's march): steps of at most
+      // a quarter of R there.
+      const double h = std::min({uniform, kStableStepFraction * x, r - x});
       const auto k1 = slope(x, psi, l1);
       if (!k1) return std::nullopt;
       const auto k2 = slope(x + 0.5 * h, psi + 0.5 * h * k1->first, l1 + 0.5 * h * k1->second);
@@ -92,6 +103,7 @@ class PartialSlip {
       if (!k4) return std::nullopt;
       psi += h * (k1->first + 2.0 * k2->first + 2.0 * k3->first + k4->first) / 6.0;
       l1 += h * (k1->second + 2.0 * k2->second + 2.0 * k3->second + k4->second) / 6.0;
+      x = h == r - x ? r : x + h;
     }
     return std::make_pair(psi, l1);
   }
@@ -165,6 +177,31 @@ class PartialSlip {
       g_lo = g_hi;
     }
     return std::nullopt;
+  }
+
+  // The state at depth `depth` past the release (r_release): the front's root of the depth
+  // (which grows as the front moves in), TOMS 748 to 1e-13 of r_release in the front, between
+  // fronts at kReleaseFront and kPoleFront r_release.  Empty outside their depths: beyond, the
+  // front is at the pole and the state the sliding model's.
+  std::optional<PartialSlipState> state_at_depth(double depth, double r_release) const {
+    auto at = [&](double front) { return state(front * r_release, r_release); };
+    auto depth_gap = [&](double front) {
+      const auto st = at(front);
+      return st ? st->at_edge.depth - depth : std::numeric_limits<double>::quiet_NaN();
+    };
+    double hi = kReleaseFront, lo = kPoleFront;
+    const double g_hi = depth_gap(hi), g_lo = depth_gap(lo);
+    if (!(g_hi < 0.0) || !(g_lo > 0.0)) return std::nullopt;
+    std::uintmax_t iterations = 100;
+    const auto root = boost::math::tools::toms748_solve(
+        depth_gap,
+        lo,
+        hi,
+        g_lo,
+        g_hi,
+        [](double a, double b) { return std::abs(b - a) <= 1e-13; },
+        iterations);
+    return at(0.5 * (root.first + root.second));
   }
 
   // The contact pressure on the profile (the normal balance, as sliding and held).
