@@ -168,42 +168,53 @@ SlipSample sample_state(const PartialSlipSetup& s, const PartialSlipState& st, d
 
 // The family's states are admissible: |tau| / p <= mu in the core (frozen) and = mu in the
 // annulus, here by an independent tangential balance with d(R s1)/dR from central differences
-// of the marched R s1 (step 1e-5, error ~1e-9 relative); p > 0; the annulus has slid outward of
-// where the core held it (psi above the held map's) and, from one state to the next deeper one,
-// every point of the annulus moves outward (the direction the friction opposes).
+// of the marched R s1 (step 1e-5 grid steps, error ~1e-9 relative); p > 0; the annulus has slid
+// outward of where the core held it (psi above the held map's) and, from one state to the next
+// deeper one, every point of the annulus moves outward (the direction the friction opposes).
+// Near the release (mu = 0.5) and late, where at mu = 1 the edge's material recedes.
 TEST(PartialSlip, FamilyIsAdmissible) {
-  const PartialSlipSetup s(0.5);
-  const auto& history = s.history();
-  const auto& law = std::get<Gent>(s.problem.material.law);
-  const double a = history.profile().arc, h = history.step();
-  std::optional<PartialSlipState> previous;
-  for (const double eps : {0.5 * h, 2.0 * h, 5.0 * h}) {
-    const auto st = s.slip.state(s.release - eps, s.release);
-    ASSERT_TRUE(st) << eps;
-    EXPECT_LE(history.held_ratio(st->front), 0.5);
-    const int n = 20;
-    for (int i = 1; i < n; ++i) {
-      const double r = st->front + (st->edge - st->front) * i / n, dr = 1e-5 * h;
-      const auto m = sample_state(s, *st, r - dr), c = sample_state(s, *st, r),
-                 pl = sample_state(s, *st, r + dr);
-      auto rs1 = [&](const SlipSample& x) {
-        return x.r * membrane_stress(law, x.l1, a * std::sin(x.psi) / x.r).s1;
-      };
-      const double l2 = a * std::sin(c.psi) / r;
-      const auto st_c = membrane_stress(law, c.l1, l2);
-      const double p = st_c.s1 / (a * l2) + st_c.s2 / (c.l1 * a);
-      const double tau = ((rs1(pl) - rs1(m)) / (2.0 * dr) - st_c.s2 * std::cos(c.psi)) /
-                         (a * std::sin(c.psi) * c.l1);
-      EXPECT_GT(p, 0.0);
-      EXPECT_NEAR(tau / p, 0.5, 1e-6) << r;
-      if (r < s.release) {
-        EXPECT_GT(c.psi, *history.psi_at(r)) << r;
+  for (const double mu : {0.5, 1.0}) {
+    const PartialSlipSetup s(mu);
+    const auto& history = s.history();
+    const auto& law = std::get<Gent>(s.problem.material.law);
+    const double a = history.profile().arc, h = history.step();
+    const std::vector<double> fronts =
+        mu == 0.5 ? std::vector<double>{s.release - 0.5 * h,
+                                        s.release - 2.0 * h,
+                                        s.release - 5.0 * h,
+                                        0.6 * s.release,
+                                        0.3 * s.release}
+                  : std::vector<double>{
+                        0.3 * s.release, 0.2 * s.release, 0.1 * s.release, 0.05 * s.release};
+    std::optional<PartialSlipState> previous;
+    for (const double front : fronts) {
+      const auto st = s.slip.state(front, s.release);
+      ASSERT_TRUE(st) << mu << " " << front;
+      EXPECT_LE(history.held_ratio(st->front), mu);
+      const int n = 20;
+      for (int i = 1; i < n; ++i) {
+        const double r = st->front + (st->edge - st->front) * i / n, dr = 1e-5 * h;
+        const auto m = sample_state(s, *st, r - dr), c = sample_state(s, *st, r),
+                   pl = sample_state(s, *st, r + dr);
+        auto rs1 = [&](const SlipSample& x) {
+          return x.r * membrane_stress(law, x.l1, a * std::sin(x.psi) / x.r).s1;
+        };
+        const double l2 = a * std::sin(c.psi) / r;
+        const auto st_c = membrane_stress(law, c.l1, l2);
+        const double p = st_c.s1 / (a * l2) + st_c.s2 / (c.l1 * a);
+        const double tau = ((rs1(pl) - rs1(m)) / (2.0 * dr) - st_c.s2 * std::cos(c.psi)) /
+                           (a * std::sin(c.psi) * c.l1);
+        EXPECT_GT(p, 0.0);
+        EXPECT_NEAR(tau / p, mu, 1e-6 * mu) << r;
+        if (r < s.release) {
+          EXPECT_GT(c.psi, *history.psi_at(r)) << r;
+        }
+        if (previous && r < previous->edge && r > previous->front) {
+          EXPECT_GT(c.psi, sample_state(s, *previous, r).psi) << r;
+        }
       }
-      if (previous && r < previous->edge && r > previous->front) {
-        EXPECT_GT(c.psi, sample_state(s, *previous, r).psi) << r;
-      }
+      previous = st;
     }
-    previous = st;
   }
 }
 
