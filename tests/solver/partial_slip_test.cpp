@@ -32,15 +32,22 @@ namespace {
 
 constexpr double kSlipPrestretch = 1.2;  // a stress-free membrane slides from the first touch
 
-Problem partial_slip_problem(double mu) {
+Problem partial_slip_problem(double mu, const Indenter& indenter) {
   Problem p = test::paper_problem(Gent{125.0}, mu);
-  p.indenter = SphereTipped{2.0};
+  p.indenter = indenter;
   p.stick = {StickRule::Coulomb, 0.0};
   p.preload.prestretch = kSlipPrestretch;
   return p;
 }
 
 using PartialSlipShooting = IndentationShooting<SphereTippedContact<Gent>>;
+
+// The curved probe's contact settings (every curved probe is a SphereTippedContact profile).
+SphereTippedSettings partial_slip_settings(const Problem& p) {
+  if (const auto* punch = std::get_if<FlatPunch>(&p.indenter)) return filleted_settings(p, *punch);
+  if (const auto* cone = std::get_if<Cone>(&p.indenter)) return contact_settings(p, *cone);
+  return contact_settings(p, std::get<SphereTipped>(p.indenter));
+}
 
 struct PartialSlipSetup {
   Problem problem;
@@ -51,11 +58,11 @@ struct PartialSlipSetup {
   double release = 0.0;  // the edge R_c where the held ratio reaches mu (NaN: never)
 
   // The history as the contact's (the default grid), held here next to its Part I.
-  explicit PartialSlipSetup(double mu)
-      : problem(partial_slip_problem(mu)),
+  explicit PartialSlipSetup(double mu, const Indenter& indenter = SphereTipped{2.0})
+      : problem(partial_slip_problem(mu, indenter)),
         shooting(std::get<Gent>(problem.material.law),
                  shooting_settings(test::tight_options(), kSlipPrestretch),
-                 contact_settings(problem, std::get<SphereTipped>(problem.indenter)), false),
+                 partial_slip_settings(problem), false),
         part_one(std::get<Gent>(problem.material.law), shooting.settings()),
         held(part_one, shooting.contact().held_profile_history().profile()),
         slip(part_one, held, mu) {
@@ -444,6 +451,57 @@ TEST(PartialSlip, StatesAtGivenDepthsAndTheJumpsError) {
     }
     EXPECT_LT(largest, 0.01) << mu;
     EXPECT_FALSE(s.slip.state_at_depth(20.0 / units.length_mm, s.release)) << mu;
+  }
+}
+
+// The same on the filleted punch (0.5 mm fillet) and the cone (30 degrees, 0.5 mm tip), mu = 0.3:
+// the release where the rule finds it, then the front moving in with the depth, the force at or
+// below the held branch's, and with the front near the map's start (the face's edge on the
+// fillet, the pole on the cone) the sliding model's state, whose face (pole) stretch tends to
+// L0.  Measured: fillet released at 0.8738 mm, sliding again from ~1.87 mm (force to 4e-5);
+// cone released at 0.1203 mm on its tip sphere, sliding again from ~0.448 mm (to 1e-7).
+TEST(PartialSlip, FilletAndConeJoinTheSlidingBranchToo) {
+  FlatPunch fillet;
+  fillet.fillet_radius_mm = 0.5;
+  Cone cone;
+  cone.half_angle_deg = 30.0;
+  cone.tip_radius_mm = 0.5;
+  for (const Indenter& probe : std::vector<Indenter>{fillet, cone}) {
+    const PartialSlipSetup s(0.3, probe);
+    const auto units = solver_scales(s.problem);
+    const auto& history = s.history();
+    const auto b = stick_slip_boundary(s.problem);
+    ASSERT_TRUE(b.ok() && b.switches) << b.message;
+    const auto at_release = s.slip.edge(s.release, s.release);
+    ASSERT_TRUE(at_release);
+    EXPECT_NEAR(at_release->depth * units.length_mm, b.depth_mm, 1e-6 * b.depth_mm);
+    double last_depth = at_release->depth;
+    for (const double f : {0.95, 0.6, 0.2, 0.01}) {
+      const double front = history.start() + f * (s.release - history.start());
+      const auto st = s.slip.state(front, s.release);
+      ASSERT_TRUE(st) << f;
+      EXPECT_GT(st->at_edge.depth, last_depth) << f;
+      last_depth = st->at_edge.depth;
+      EXPECT_LT(st->at_edge.psi, history.profile().tangency);
+      const auto held = s.shooting.solve_at_depth(Stage::Stick, st->at_edge.depth);
+      const auto sliding = s.shooting.solve_at_depth(Stage::Slip, st->at_edge.depth);
+      ASSERT_TRUE(held.ok() && sliding.ok()) << f;
+      std::cout << fmt::format(
+          "{}: front {:.2f}, depth {:.5f} mm, force {:.7f} N (held {:.7f}, sliding {:.7f}, its "
+          "face stretch {:.5f})\n",
+          history.start() > 0.0 ? "fillet" : "cone",
+          f,
+          st->at_edge.depth * units.length_mm,
+          st->at_edge.f * units.force_n,
+          held.f * units.force_n,
+          sliding.f * units.force_n,
+          sliding.part_three_stretch);
+      EXPECT_LE(st->at_edge.f, held.f * (1.0 + 1e-9)) << f;
+      if (f == 0.01) {
+        EXPECT_NEAR(st->at_edge.f, sliding.f, 1e-4 * sliding.f);
+        EXPECT_NEAR(sliding.part_three_stretch, kSlipPrestretch, 3e-3);
+      }
+    }
   }
 }
 
