@@ -497,6 +497,11 @@ TEST(PartialSlip, FilletAndConeJoinTheSlidingBranchToo) {
           sliding.f * units.force_n,
           sliding.part_three_stretch);
       EXPECT_LE(st->at_edge.f, held.f * (1.0 + 1e-9)) << f;
+      if (f == 0.6) {  // the state at its depth: the same front, from the map's start
+        const auto again = s.slip.state_at_depth(st->at_edge.depth, s.release);
+        ASSERT_TRUE(again);
+        EXPECT_NEAR(again->front, st->front, 1e-9 * s.release);
+      }
       if (f == 0.01) {
         EXPECT_NEAR(st->at_edge.f, sliding.f, 1e-4 * sliding.f);
         EXPECT_NEAR(sliding.part_three_stretch, kSlipPrestretch, 3e-3);

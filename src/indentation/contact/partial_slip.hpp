@@ -14,10 +14,12 @@
 // leaves at R_c with the annulus's state and f = R_c s1 sin(phi) (+ the gas's share), so the
 // clamp residual g(R_s, R_c) is one condition on two unknowns: the states form a one-parameter
 // family, the loading path.  Besides the history's own states (R_c = R_s, an empty annulus) the
-// family's branch starts at the release, where the front's frozen ratio is mu, and there g =
+// family's branch starts at the release R_r, where the front's frozen ratio is mu, and there g =
 // O((R_c - R_s)^2): with the front pinned there the release is an isolated (double) root, and
-// the front must move inward for the path to go on.  Lengths / (A / L0), forces / (2 pi G H A /
-// L0), tractions / (G H / A), as the history.
+// the front must move inward for the path to go on (the edge advancing about as far, R_c - R_r ~
+// R_r - R_s).  It ends where the front reaches the map's start (the pole, the face's edge): the
+// state is then the sliding model's.  Lengths / (A / L0), forces / (2 pi G H A / L0), tractions
+// / (G H / A), as the history.
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
@@ -49,10 +51,11 @@ class PartialSlip {
  public:
   // Annulus steps per history grid step (classical Runge-Kutta, O(h^4)).
   static constexpr int kStepsPerGridStep = 4;
-  // The fronts (/ the release edge) that bound a depth's search: just inside the release and
-  // near the pole.  Closer to the release the edge's root is lost in the held map's own clamp
-  // residual (~1e-10, its interpolation), the annulus's residual growing as 54 d^2 only; the
-  // depths skipped are within a few um of the release's (the held state stands for them).
+  // The fronts (fractions of the way from the map's start to the release edge) that bound a
+  // depth's search: just inside the release and near the start.  Closer to the release the edge's
+  // root is lost in the held map's own clamp residual (~1e-10, its interpolation), the annulus's
+  // residual growing as 54 d^2 only; the depths skipped are within a few um of the release's (the
+  // held state stands for them).
   static constexpr double kReleaseFront = 1.0 - 1e-3;
   static constexpr double kPoleFront = 1e-3;
   static constexpr double kStableStepFraction = 0.25;
@@ -62,8 +65,8 @@ class PartialSlip {
 
   double mu() const { return mu_; }
 
-  // The annulus's (dpsi/dR, dlambda1/dR) at (r, psi, lambda1); empty outside the material's
-  // domain (s1 <= 0 or past locking).
+  // The annulus's (dpsi/dR, dlambda1/dR) at (r, psi, lambda1); empty past locking or where s1 no
+  // longer grows with lambda1.
   std::optional<std::pair<double, double>> slope(double r, double psi, double l1) const {
     const HeldProfile& q = history_.profile();
     const bool cone = q.on_cone(psi);
@@ -180,16 +183,17 @@ class PartialSlip {
   }
 
   // The state at depth `depth` past the release (r_release): the front's root of the depth
-  // (which grows as the front moves in), TOMS 748 to 1e-13 of r_release in the front, between
-  // fronts at kReleaseFront and kPoleFront r_release.  Empty outside their depths: beyond, the
-  // front is at the pole and the state the sliding model's.
+  // (which grows as the front moves in), TOMS 748 to 1e-13 in the front's fraction, between
+  // kReleaseFront and kPoleFront.  Empty outside their depths: beyond, the front is at the map's
+  // start and the state the sliding model's.
   std::optional<PartialSlipState> state_at_depth(double depth, double r_release) const {
-    auto at = [&](double front) { return state(front * r_release, r_release); };
+    const double start = history_.start();
+    auto at = [&](double front) { return state(start + front * (r_release - start), r_release); };
     auto depth_gap = [&](double front) {
       const auto st = at(front);
       return st ? st->at_edge.depth - depth : std::numeric_limits<double>::quiet_NaN();
     };
-    double hi = kReleaseFront, lo = kPoleFront;
+    const double hi = kReleaseFront, lo = kPoleFront;
     const double g_hi = depth_gap(hi), g_lo = depth_gap(lo);
     if (!(g_hi < 0.0) || !(g_lo > 0.0)) return std::nullopt;
     std::uintmax_t iterations = 100;
