@@ -100,9 +100,9 @@ std::optional<Equilibrium> partial_slip_at_depth(const Problem& p, const Shootin
   e.max_first_invariant = pt->max_first_invariant;
   e.beyond_puncture = pt->beyond_puncture;
   e.message = fmt::format(
-      "partial slip after the coulomb release (released at depth {} mm): held inside the slip "
-      "front at R = {} mm (r = {} mm), sliding outside it; the fields along the meridian are not "
-      "sampled",
+      "partial slip after the coulomb release (released at depth {:.6g} mm): held inside the "
+      "slip front at R = {:.6g} mm (r = {:.6g} mm), sliding outside it; the fields along the "
+      "meridian are not sampled",
       segment->release_depth_mm,
       e.slip_front_reference_radius_mm,
       e.slip_front_radius_mm);
