@@ -20,6 +20,9 @@ void bind_enums(py::module_& m) {
       .value("SlipWithPartTwo",
              Configuration::SlipWithPartTwo,
              "Part III, the corner wrapped, Part II on the indenter's side, then Part I")
+      .value("PartialSlip",
+             Configuration::PartialSlip,
+             "after a coulomb release: a held core, a slipping annulus, then Part I")
       .def_property_readonly("token", [](Configuration c) { return to_token(c); })
       .def_property_readonly("description", [](Configuration c) { return to_string(c); });
 

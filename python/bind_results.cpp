@@ -168,6 +168,12 @@ void bind_results(py::module_& m) {
       .def_readonly("corner_tension_ratio",
                     &Equilibrium::corner_tension_ratio,
                     "s1 just outside the corner / s1 in Part III (inf for a held membrane)")
+      .def_readonly("slip_front_reference_radius_mm",
+                    &Equilibrium::slip_front_reference_radius_mm,
+                    "partial slip: reference radius of the slip front [mm] (0 otherwise)")
+      .def_readonly("slip_front_radius_mm",
+                    &Equilibrium::slip_front_radius_mm,
+                    "partial slip: current radius of the slip front [mm] (0 otherwise)")
       .def_readonly("max_first_invariant", &Equilibrium::max_first_invariant, "largest I1")
       .def_readonly("max_first_invariant_reference_radius_mm",
                     &Equilibrium::max_first_invariant_reference_radius_mm,
@@ -208,6 +214,12 @@ void bind_results(py::module_& m) {
       .def_readonly("contact_edge_height_mm",
                     &CurvePoint::contact_edge_height_mm,
                     "height of that edge above the probe's tip [mm]")
+      .def_readonly("slip_front_reference_radius_mm",
+                    &CurvePoint::slip_front_reference_radius_mm,
+                    "partial slip: reference radius of the slip front [mm] (0 otherwise)")
+      .def_readonly("slip_front_radius_mm",
+                    &CurvePoint::slip_front_radius_mm,
+                    "partial slip: current radius of the slip front [mm] (0 otherwise)")
       .def("__repr__", [](const CurvePoint& p) {
         return fmt::format("<CurvePoint depth_mm={:.6g}, force_n={:.6g}, {}>",
                            p.depth_mm,

@@ -109,6 +109,11 @@ json state_json(const Equilibrium& e) {
   };
   if (const auto ratio = finite_or_unbounded(e.corner_tension_ratio, "corner tension ratio"))
     out["corner_tension_ratio"] = *ratio;
+  if (e.configuration == Configuration::PartialSlip) {
+    out["slip_front_reference_radius_mm"] =
+        finite(e.slip_front_reference_radius_mm, "slip front reference radius");
+    out["slip_front_radius_mm"] = finite(e.slip_front_radius_mm, "slip front radius");
+  }
   if (e.gas)
     out["gas"] = {{"pressure_mpa", finite(e.gas->pressure_mpa, "chamber's gas pressure")},
                   {"volume_mm3", finite(e.gas->volume_mm3, "enclosed volume")}};
@@ -124,6 +129,12 @@ json curve_json(const CurveReport& r) {
     stick_slip["depth_mm"] = finite(c.stick_slip.depth_mm, "switch depth");
     stick_slip["force_stuck_n"] = finite(c.stick_slip.force_stuck_n, "force before the switch");
     stick_slip["force_sliding_n"] = finite(c.stick_slip.force_sliding_n, "force after the switch");
+    if (c.stick_slip.full_sliding_depth_mm) {
+      stick_slip["full_sliding_depth_mm"] =
+          finite(*c.stick_slip.full_sliding_depth_mm, "depth of full sliding");
+      stick_slip["full_sliding_force_n"] =
+          finite(c.stick_slip.full_sliding_force_n, "force at full sliding");
+    }
   }
   json part_two = nullptr;
   if (c.part_two_onset_depth_mm && c.part_two_onset_force_n)

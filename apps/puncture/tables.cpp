@@ -43,6 +43,20 @@ Table curve_table(const std::vector<CurvePoint>& points) {
       t.rows[i].push_back(gas ? std::optional<double>(gas->volume_mm3) : std::nullopt);
     }
   }
+  // After a coulomb release: the slip front of the partial-slip points (empty on the others).
+  const auto partial = [](const CurvePoint& p) {
+    return p.configuration == Configuration::PartialSlip;
+  };
+  if (std::any_of(points.begin(), points.end(), partial)) {
+    t.columns.insert(t.columns.end(), {"slip_front_reference_radius_mm", "slip_front_radius_mm"});
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const bool on = partial(points[i]);
+      t.rows[i].push_back(on ? std::optional<double>(points[i].slip_front_reference_radius_mm)
+                             : std::nullopt);
+      t.rows[i].push_back(on ? std::optional<double>(points[i].slip_front_radius_mm)
+                             : std::nullopt);
+    }
+  }
   return t;
 }
 

@@ -17,6 +17,9 @@ enum class Configuration {
   Stick,               // membrane held at the indenter's edge; Part III unstretched
   SlipWithoutPartTwo,  // Part III stretched, capstan across the corner, Part I from the corner
   SlipWithPartTwo,     // Part III, corner wrapped by pi/2, Part II on the side, then Part I
+  // After a `coulomb` release on a curved probe: a held core, a slipping annulus from the slip
+  // front to the contact's edge, then Part I (docs/model.md §15.4).
+  PartialSlip,
 };
 
 enum class Stage { Stick, Slip };
@@ -42,6 +45,10 @@ struct Equilibrium : Outcome {
   // tip [mm].
   double contact_edge_radius_mm = 0.0;
   double contact_edge_height_mm = 0.0;
+  // Partial slip (Configuration::PartialSlip): the slip front's reference radius R_s and current
+  // distance from the axis [mm] (0 and 0 otherwise).
+  double slip_front_reference_radius_mm = 0.0;
+  double slip_front_radius_mm = 0.0;
   double corner_tension_ratio = 1.0;  // s1 just outside the corner / s1 in Part III
   double max_first_invariant = 3.0;   // largest I1 in the membrane: where a crack starts
   double max_first_invariant_reference_radius_mm = 0.0;        // where it is: reference radius R

@@ -29,6 +29,11 @@ struct CurvePoint {
   // its height above the probe's tip [mm] (0 and 0 unloaded).
   double contact_edge_radius_mm = 0.0;
   double contact_edge_height_mm = 0.0;
+  // Partial slip (Configuration::PartialSlip): the slip front, held inside, slipping outside to
+  // the contact's edge; its reference radius R_s and current distance from the axis [mm] (0 and
+  // 0 in every other configuration).
+  double slip_front_reference_radius_mm = 0.0;
+  double slip_front_radius_mm = 0.0;
 };
 
 // The stick -> slip switch under displacement control: at the switch depth the held state and
@@ -38,6 +43,11 @@ struct StickSlipSwitch {
   double depth_mm = 0.0;
   double force_stuck_n = 0.0;    // force just before the switch (membrane held)
   double force_sliding_n = 0.0;  // force just after (membrane sliding), at the same depth
+  // After a `coulomb` release on a curved probe the curve follows a partial slip (its points
+  // Configuration::PartialSlip, force_sliding_n the held force: no jump) until the slip front
+  // reaches the pole here [mm, N]: full sliding from there on.  Empty otherwise.
+  std::optional<double> full_sliding_depth_mm;
+  double full_sliding_force_n = 0.0;
 };
 
 struct PuncturePrediction : Outcome {

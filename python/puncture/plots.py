@@ -38,17 +38,20 @@ STAGE_COLOURS = {
     "stick": "#d9d9d9",
     "slip_without_part_two": "#cfe2f3",
     "slip_with_part_two": "#fde3c8",
+    "partial_slip": "#d9ead3",
 }
 CONFIGURATION_NAMES = {
     "unloaded": "unloaded",
     "stick": "held at the edge",
     "slip_without_part_two": "slip without Part II",
     "slip_with_part_two": "slip with Part II",
+    "partial_slip": "partial slip (held core, slipping annulus)",
 }
 STAGE_NAMES = {
     "stick": "stick (held at the edge)",
     "slip_without_part_two": "slip without Part II",
     "slip_with_part_two": "slip with Part II",
+    "partial_slip": "partial slip (held core, slipping annulus)",
 }
 # Line styles telling several states apart (their parts keep the part colours).
 STATE_STYLES = ["-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1))]

@@ -176,8 +176,11 @@ class EventLocator {
 // Neighbours on one smooth branch: the same stage at increasing depths (the stick -> slip
 // switch repeats its depth).
 bool same_branch(const CurvePoint& a, const CurvePoint& b) {
+  // (The partial slip after a coulomb release is a branch of its own, up to full sliding.)
   return a.stage == b.stage && b.depth_mm > a.depth_mm &&
-         a.configuration != Configuration::Unloaded;
+         a.configuration != Configuration::Unloaded &&
+         (a.configuration == Configuration::PartialSlip) ==
+             (b.configuration == Configuration::PartialSlip);
 }
 
 std::string configuration_words(const CurvePoint& q) {
@@ -188,6 +191,8 @@ std::string configuration_words(const CurvePoint& q) {
       return "the membrane sliding on the probe's tip";
     case Configuration::Stick:
       return "the membrane held at the probe's edge";
+    case Configuration::PartialSlip:
+      return "the membrane held inside the slip front, sliding outside it";
     case Configuration::Unloaded:
       return "unloaded";
   }

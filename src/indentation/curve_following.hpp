@@ -5,6 +5,7 @@
 // change of configuration on the sliding branch.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "indentation/depth_newton.hpp"
+#include "indentation/partial_slip_path.hpp"
 #include "indentation/puncture_search.hpp"
 #include "indentation/solver_scales.hpp"
 #include "numerics/gauss_legendre.hpp"
@@ -219,6 +221,55 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     out.points.push_back(curve_point_of(p, contact, *sol, stage, depth));
     return true;
   };
+  // After a `coulomb` release on a curved probe the path is the partial-slip family's up to its
+  // hand-over to the sliding model (partial_slip_path.hpp).
+  const auto partial = has_switch ? partial_slip_segment(p, shooting, boundary) : std::nullopt;
+  if (partial) {
+    out.stick_slip.full_sliding_depth_mm = partial->handover_depth_mm;
+    out.stick_slip.full_sliding_force_n = partial->handover_force_n;
+  }
+  bool after_partial = false;  // the first sliding point past the hand-over starts a new segment
+  auto add_partial_point = [&](double depth) -> bool {
+    if (depth < partial->first_depth_mm) {
+      // Within a few um of the release the front's search does not resolve the family (its
+      // annulus ~1e-3 of the release edge wide): the held state stands for it there.
+      if (!add_point(depth, Stage::Stick)) return false;
+      CurvePoint& held = out.points.back();
+      held.stage = Stage::Slip;
+      held.configuration = Configuration::PartialSlip;
+      held.slip_front_reference_radius_mm = partial->release.slip_front_reference_radius_mm;
+      held.slip_front_radius_mm = held.contact_edge_radius_mm;
+      after_partial = true;
+      return true;
+    }
+    auto pt = partial->at_depth(depth);
+    if (!pt) {
+      out.status = Status::NoConvergence;
+      out.message = fmt::format(
+          "at depth {:.6g} mm (partial slip after the coulomb release): no state of the "
+          "family reaches this depth",
+          depth);
+      return false;
+    }
+    pt->depth_mm = depth;  // the family's depth, to its search's 1e-13
+    for (const auto& c : failure_criteria(p))
+      if (std::holds_alternative<CriticalFirstInvariant>(c) &&
+          pt->max_first_invariant > critical_value(c) * (1.0 + 1e-8))
+        pt->beyond_puncture = true;
+    out.points.push_back(*pt);
+    after_partial = true;
+    return true;
+  };
+  auto add_path_point = [&](double depth, Stage stage) -> bool {
+    if (partial && stage == Stage::Slip && partial->covers(depth)) return add_partial_point(depth);
+    if (after_partial && stage == Stage::Slip) {
+      // Past the hand-over the sliding model's segment starts from the family's last force.
+      predictor.history.clear();
+      newton.reset();
+      after_partial = false;
+    }
+    return add_point(depth, stage);
+  };
   const bool given = !curve.depths_mm.empty();
   const int n = given ? static_cast<int>(curve.depths_mm.size()) : curve.points;
   // The last depth is end_depth itself (end_depth * (n - 1) / (n - 1) may miss it by an ulp).
@@ -233,10 +284,17 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
       // Both sides of the switch, at the switch depth (which may be a grid depth: the last one
       // when the membrane punctures as it starts sliding).
       if (!add_point(boundary.depth_mm, Stage::Stick)) return false;
-      if (!add_point(boundary.depth_mm, Stage::Slip)) return false;
+      if (partial) {
+        // The family starts from the held state (an empty annulus): no jump.
+        out.points.push_back(partial->release);
+        out.points.back().depth_mm = boundary.depth_mm;
+        after_partial = true;
+      } else if (!add_point(boundary.depth_mm, Stage::Slip)) {
+        return false;
+      }
       out.stick_slip.force_sliding_n = out.points.back().force_n;
     }
-    if (!(has_switch && depth == boundary.depth_mm) && !add_point(depth, stage_at(depth)))
+    if (!(has_switch && depth == boundary.depth_mm) && !add_path_point(depth, stage_at(depth)))
       return false;
     if (curve.progress) curve.progress(k + 1, n);
   }
@@ -298,6 +356,15 @@ void add_energy_to_puncture(const Problem& p, const Shooting& shooting, double c
   if (boundary.switches && boundary.depth_mm < end) cuts.push_back(boundary.depth_mm);
   if (change.state && *change.depth_mm > cuts.back() && *change.depth_mm < end)
     cuts.push_back(*change.depth_mm);
+  // After a `coulomb` release the path's partial slip hands over to the sliding model where its
+  // front reaches the pole (partial_slip_path.hpp): the force's slope need not be smooth there.
+  if (has_switch)
+    if (const auto partial = partial_slip_segment(p, shooting, boundary);
+        partial && partial->handover_depth_mm > boundary.depth_mm &&
+        partial->handover_depth_mm < end) {
+      cuts.push_back(partial->handover_depth_mm);
+      std::sort(cuts.begin(), cuts.end());
+    }
   cuts.push_back(end);
   QuadratureNodes q;
   const bool pretensioned = p.preload.pressure_mpa > 0.0 || p.preload.prestretch > 1.0;

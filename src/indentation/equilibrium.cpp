@@ -7,7 +7,9 @@
 #include <stdexcept>
 
 #include "indentation/dispatch.hpp"
+#include "indentation/partial_slip_path.hpp"
 #include "indentation/physical_state.hpp"
+#include "indentation/puncture_search.hpp"
 #include "indentation/reported_failure.hpp"
 #include "indentation/scaled_problem.hpp"
 #include "indentation/sealed_gas.hpp"
@@ -24,6 +26,8 @@ std::string to_string(Configuration c) {
       return "slip without Part II";
     case Configuration::SlipWithPartTwo:
       return "slip with Part II";
+    case Configuration::PartialSlip:
+      return "partial slip";
   }
   return "?";
 }
@@ -38,6 +42,8 @@ std::string to_token(Configuration c) {
       return "slip_without_part_two";
     case Configuration::SlipWithPartTwo:
       return "slip_with_part_two";
+    case Configuration::PartialSlip:
+      return "partial_slip";
   }
   return "unknown";
 }
@@ -57,6 +63,50 @@ std::optional<ScaledSolution> direct_puncture(const Problem& problem,
   return with_shooting(problem, options, [&](const auto& shooting) {
     return shooting.contact().direct_puncture(shooting, problem.critical_i1);
   });
+}
+
+// The path's state at a depth between a `coulomb` release and the hand-over to the sliding
+// model (partial_slip_path.hpp), as the loading curve's; empty elsewhere.  The fields along the
+// meridian are not sampled for it.
+template <class Shooting>
+std::optional<Equilibrium> partial_slip_at_depth(const Problem& p, const Shooting& shooting,
+                                                 double depth_mm) {
+  if (p.stick.rule != StickRule::Coulomb) return std::nullopt;
+  const auto switch_point = locate_switch(p, shooting);
+  const StageBoundary& b = switch_point.boundary;
+  if (b.status != Status::Converged || !b.switches) return std::nullopt;
+  const auto segment = partial_slip_segment(p, shooting, b);
+  if (!segment || !segment->covers(depth_mm) || depth_mm < segment->first_depth_mm)
+    return std::nullopt;
+  Equilibrium e;
+  e.stage = Stage::Slip;
+  e.configuration = Configuration::PartialSlip;
+  const auto pt = segment->at_depth(depth_mm);
+  if (!pt) {
+    e.status = Status::NoConvergence;
+    e.message = fmt::format("no partial-slip state after the coulomb release reaches depth {} mm",
+                            depth_mm);
+    return e;
+  }
+  e.status = Status::Converged;
+  e.force_n = pt->force_n;
+  e.normalized_force = pt->normalized_force;
+  e.depth_mm = depth_mm;
+  e.part_three_stretch = pt->part_three_stretch;
+  e.contact_edge_radius_mm = pt->contact_edge_radius_mm;
+  e.contact_edge_height_mm = pt->contact_edge_height_mm;
+  e.slip_front_reference_radius_mm = pt->slip_front_reference_radius_mm;
+  e.slip_front_radius_mm = pt->slip_front_radius_mm;
+  e.max_first_invariant = pt->max_first_invariant;
+  e.beyond_puncture = pt->beyond_puncture;
+  e.message = fmt::format(
+      "partial slip after the coulomb release (released at depth {:.6g} mm): held inside the "
+      "slip front at R = {:.6g} mm (r = {:.6g} mm), sliding outside it; the fields along the "
+      "meridian are not sampled",
+      segment->release_depth_mm,
+      e.slip_front_reference_radius_mm,
+      e.slip_front_radius_mm);
+  return e;
 }
 
 }  // namespace detail
@@ -99,6 +149,9 @@ Equilibrium solve_at_depth(const Problem& problem, double depth_mm, Stage stage,
   const double d = depth_mm / detail::solver_scales(problem).length_mm;
   return detail::reporting_failures<Equilibrium>([&] {
     return detail::with_shooting(problem, options, [&](const auto& shooting) {
+      if (stage == Stage::Slip)
+        if (auto partial = detail::partial_slip_at_depth(problem, shooting, depth_mm))
+          return std::move(*partial);
       return detail::to_physical(
           problem, shooting.contact(), shooting.solve_at_depth(stage, d), stage, options);
     });

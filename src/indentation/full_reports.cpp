@@ -28,6 +28,25 @@ std::string failure(const Outcome& o) {
 }
 
 std::string switch_text(const LoadingCurve& c, const Problem& p) {
+  // After a Coulomb release the curve follows the partial slip that joins the held and the
+  // sliding branches continuously (docs/model.md §15.4).
+  if (c.stick_slip.occurs && c.stick_slip.full_sliding_depth_mm)
+    return fmt::format(
+        "at depth {} mm, force {} N: the held edge needs |tau|/p = mu; a slip zone starts at "
+        "the contact's edge and spreads inward (partial slip, no jump); its front reaches the "
+        "pole at depth {} mm, force {} N: full sliding from there (docs/model.md, section 15.4)",
+        num(c.stick_slip.depth_mm),
+        num(c.stick_slip.force_stuck_n),
+        num(*c.stick_slip.full_sliding_depth_mm),
+        num(c.stick_slip.full_sliding_force_n));
+  if (c.stick_slip.occurs && p.stick.rule == StickRule::Coulomb)
+    return fmt::format(
+        "at depth {} mm: force {} N (held) -> {} N (sliding); the curve jumps to full "
+        "sliding here, where the held edge needs |tau|/p = mu: the partial slip that joins the "
+        "two branches (docs/model.md, section 15.4) is not solved on this probe",
+        num(c.stick_slip.depth_mm),
+        num(c.stick_slip.force_stuck_n),
+        num(c.stick_slip.force_sliding_n));
   if (c.stick_slip.occurs)
     return fmt::format("at depth {} mm: force {} N (held) -> {} N (sliding)",
                        num(c.stick_slip.depth_mm),
@@ -223,6 +242,23 @@ std::string full_report(const Equilibrium& e, const Problem& p) {
        fmt::format("{} N (F / 2 pi G H A = {})", num(e.force_n), num(e.normalized_force)));
   line(out, "depth", num(e.depth_mm) + " mm");
   if (e.gas) line(out, "chamber gas", gas_text(*e.gas));
+  if (e.configuration == Configuration::PartialSlip) {
+    // The held core, the slipping annulus and Part I: no corner; the fields are not sampled.
+    line(out, "pole stretch", num(e.part_three_stretch) + " (held where it touched)");
+    line(out,
+         "slip front",
+         fmt::format("reference R = {} mm, current r = {} mm (held inside, sliding outside)",
+                     num(e.slip_front_reference_radius_mm),
+                     num(e.slip_front_radius_mm)));
+    line(out,
+         "contact edge",
+         fmt::format("r = {} mm, {} mm above the tip",
+                     num(e.contact_edge_radius_mm),
+                     num(e.contact_edge_height_mm)));
+    line(out, "largest I1", num(e.max_first_invariant));
+    line(out, "note", e.message);
+    return out;
+  }
   line(out, "Part III stretch", num(e.part_three_stretch));
   line(out, "corner at reference R", num(e.corner_reference_radius_mm) + " mm");
   if (e.configuration == Configuration::SlipWithPartTwo)

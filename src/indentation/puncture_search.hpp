@@ -12,6 +12,7 @@
 #include "failure/criterion.hpp"
 #include "indentation/criterion_on_state.hpp"
 #include "indentation/depth_path_puncture.hpp"
+#include "indentation/partial_slip_path.hpp"
 #include "indentation/physical_state.hpp"
 #include "indentation/scaled_problem.hpp"
 #include "numerics/shooting.hpp"
@@ -465,6 +466,20 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
       at_switch = switch_k;
     }
   }
+  // After a `coulomb` release the path is a partial slip up to its hand-over
+  // (partial_slip_path.hpp): a sliding puncture found within that stretch is not the path's.
+  if (first.ok() && first.stage == Stage::Slip)
+    if (const auto partial = partial_slip_segment(p, shooting, switch_point.boundary);
+        partial && first.depth_mm >= partial->release_depth_mm &&
+        first.depth_mm < partial->handover_depth_mm) {
+      first.status = Status::OutsideModel;
+      first.message = fmt::format(
+          "no puncture found where the model holds: the sliding model reaches the criterion at "
+          "depth {:.6g} mm, within the partial slip after the coulomb release (to {:.6g} mm), "
+          "where the puncture is not searched",
+          first.depth_mm,
+          partial->handover_depth_mm);
+    }
   return first;
 }
 

@@ -151,6 +151,7 @@ class FlatPunchContact {
       }
       case Configuration::Stick:  // held_start
       case Configuration::Unloaded:
+      case Configuration::PartialSlip:  // curved probes only (partial_slip_path.hpp)
         break;
     }
     return std::nullopt;

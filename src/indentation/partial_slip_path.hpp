@@ -1,0 +1,186 @@
+#pragma once
+// The loading path after a `coulomb` release on a curved probe (docs/model.md §15.4, "Partial
+// slip after the release"): from the release to the depth where the slip front reaches the map's
+// start (the pole, the fillet's face edge) the path's states are the partial-slip family's
+// (contact/partial_slip.hpp); past that hand-over they are the sliding model's, which the family
+// meets there.  The curve driver (curve_following.hpp) takes its points from here on that stretch.
+#include <algorithm>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <type_traits>
+
+#include "indentation/contact/partial_slip.hpp"
+#include "indentation/solver_scales.hpp"
+#include "puncture/loading_curve.hpp"
+
+namespace puncture::detail {
+
+// A partial-slip state as a curve point (stage Slip, Configuration::PartialSlip): force and depth,
+// the frozen pole's stretch, the contact's edge, the slip front and the largest I1 (the held core's
+// grid points, the annulus's samples, Part I's maximum).
+struct PartialSlipPoint {
+  CurvePoint point;
+  double edge_reference_radius_mm = 0.0;
+};
+
+// The stretch of the path that follows the family, in mm: from the release's depth (the held
+// state's, an empty annulus) to the hand-over, with the family's state at a depth in between.
+struct PartialSlipSegment {
+  double release_depth_mm = 0.0;
+  // The family's first depth a depth's search resolves (PartialSlip::kReleaseFront, a few um past
+  // the release): between the release and it the held state stands for the family's.
+  double first_depth_mm = 0.0;
+  double handover_depth_mm = 0.0;  // the front at the map's start (PartialSlip::kPoleFront)
+  double handover_force_n = 0.0;
+  CurvePoint release;  // the family's state at the release (the held one)
+  std::function<std::optional<CurvePoint>(double depth_mm)> at_depth;  // empty outside the family
+  bool covers(double depth_mm) const {
+    return depth_mm > release_depth_mm && depth_mm < handover_depth_mm;
+  }
+};
+
+// The family on a held-profile history with its Part I and the release edge.
+template <class Law>
+class PartialSlipPath {
+ public:
+  // Sub-intervals of the annulus sampled for its largest I1 (it grows smoothly outward, to the
+  // edge's value; the edge itself is sampled as Part I's start).
+  static constexpr int kAnnulusSamples = 8;
+
+  PartialSlipPath(const ProfileStickHistory<Law>& history, const Law& law,
+                  const ShootingSettings& settings, double mu, const SolverScales& units)
+      : part_one_(law, settings),
+        history_(history),
+        slip_(part_one_, history_, mu),
+        units_(units) {}
+
+  // The release edge R_r where the held points' largest |tau| / p reaches mu (bisected between
+  // the history's grid points to 1e-15); empty when the history never reaches mu.
+  std::optional<double> release_edge() const {
+    const auto& pts = history_.points();
+    const double mu = slip_.mu();
+    if (pts.size() < 3 || !(history_.held_ratio(pts.back().r) >= mu)) return std::nullopt;
+    std::size_t k = 2;
+    while (k + 1 < pts.size() && history_.held_ratio(pts[k].r) < mu) ++k;
+    std::uintmax_t iterations = 200;
+    const auto root =
+        boost::math::tools::bisect([&](double r) { return history_.held_ratio(r) - mu; },
+                                   pts[k - 1].r,
+                                   pts[k].r,
+                                   [](double a, double b) { return std::abs(b - a) <= 1e-15; },
+                                   iterations);
+    return 0.5 * (root.first + root.second);
+  }
+
+  const PartialSlip<Law>& family() const { return slip_; }
+
+  // The state with its front a fraction `front` of the way from the map's start to the release.
+  std::optional<PartialSlipState> at_front(double front, double release) const {
+    const double start = history_.start();
+    return slip_.state(start + front * (release - start), release);
+  }
+
+  // The curve point of a state of the family.
+  std::optional<CurvePoint> point(const PartialSlipState& st) const {
+    const HeldProfile& q = history_.profile();
+    const auto front_psi = history_.psi_at(st.front);
+    if (!front_psi) return std::nullopt;
+    const double psi = st.at_edge.psi;
+    CurvePoint pt;
+    pt.depth_mm = st.at_edge.depth * units_.length_mm;
+    pt.force_n = st.at_edge.f * units_.force_n;
+    pt.normalized_force = units_.normalized_force(st.at_edge.f);
+    pt.stage = Stage::Slip;
+    pt.configuration = Configuration::PartialSlip;
+    pt.part_three_stretch = history_.first_touch_stretch();  // the held pole keeps its stretch
+    pt.contact_edge_radius_mm = q.radius(psi) * units_.length_mm;
+    pt.contact_edge_height_mm = q.height(psi) * units_.length_mm;
+    pt.slip_front_reference_radius_mm = st.front * units_.length_mm;
+    pt.slip_front_radius_mm = q.radius(*front_psi) * units_.length_mm;
+    const auto i1 = largest_i1(st);
+    if (!i1) return std::nullopt;
+    pt.max_first_invariant = *i1;
+    return pt;
+  }
+
+  // The largest I1 of the state: the held core (its grid points and the pole), the annulus's
+  // samples and Part I's interior maximum.
+  std::optional<double> largest_i1(const PartialSlipState& st) const {
+    const HeldProfile& q = history_.profile();
+    const double pole = history_.first_touch_stretch();
+    double i1 = first_invariant(pole, pole);
+    for (const StuckPoint& k : history_.points()) {
+      if (k.r > st.front) break;
+      if (k.r > 0.0) i1 = std::max(i1, first_invariant(k.l1, q.radius(k.theta) / k.r));
+    }
+    for (int i = 0; i <= kAnnulusSamples; ++i) {
+      const double r = st.front + (st.edge - st.front) * i / kAnnulusSamples;
+      const auto at = slip_.march(st.front, r);
+      if (!at) return std::nullopt;
+      i1 = std::max(i1, first_invariant(at->second, q.radius(at->first) / r));
+    }
+    const auto start = slip_.free_start(st.edge, st.at_edge.psi, st.at_edge.l1);
+    if (!start) return std::nullopt;
+    const auto run = part_one_.run(st.at_edge.f, *start, nullptr, true);
+    if (!run.ok) return std::nullopt;
+    return std::max(i1, run.max_i1);
+  }
+
+ private:
+  FreePart<Law> part_one_;
+  const ProfileStickHistory<Law>& history_;
+  PartialSlip<Law> slip_;
+  SolverScales units_;
+};
+
+// The segment of a `coulomb` problem whose membrane is released at a finite depth on a curved
+// probe (a contact with a held-profile history: the sphere-tipped probe, the filleted punch, the
+// cone and the ball), without a gas pressure; empty otherwise, or where the family's ends cannot
+// be solved (the curve then jumps to the sliding model at the release, as the report says).
+template <class Shooting>
+std::optional<PartialSlipSegment> partial_slip_segment(const Problem& p, const Shooting& shooting,
+                                                       const StageBoundary& boundary) {
+  const auto& contact = shooting.contact();
+  if constexpr (!requires(const std::decay_t<decltype(contact)>& c) { c.held_profile_history(); }) {
+    return std::nullopt;
+  } else {
+    // Under a gas pressure the family is not solved (docs/model.md §15.4, "Not yet").
+    if (p.stick.rule != StickRule::Coulomb || !boundary.switches || p.preload.pressure_mpa > 0.0)
+      return std::nullopt;
+    using Law = std::decay_t<decltype(contact.law())>;
+    const auto path = std::make_shared<PartialSlipPath<Law>>(contact.held_profile_history(),
+                                                             contact.law(),
+                                                             shooting.settings(),
+                                                             p.friction,
+                                                             solver_scales(p));
+    const auto release = path->release_edge();
+    if (!release) return std::nullopt;
+    const auto& slip = path->family();
+    const auto at_release = slip.edge(*release, *release);
+    const auto first = path->at_front(PartialSlip<Law>::kReleaseFront, *release);
+    const auto last = path->at_front(PartialSlip<Law>::kPoleFront, *release);
+    if (!at_release || !first || !last) return std::nullopt;
+    PartialSlipState empty_annulus{*release, *release, *at_release};
+    const auto release_point = path->point(empty_annulus);
+    if (!release_point) return std::nullopt;
+    PartialSlipSegment out;
+    out.release = *release_point;
+    out.release_depth_mm = boundary.depth_mm;
+    const double big_a = solver_scales(p).length_mm;
+    out.first_depth_mm = first->at_edge.depth * big_a;
+    out.handover_depth_mm = last->at_edge.depth * big_a;
+    out.handover_force_n = last->at_edge.f * solver_scales(p).force_n;
+    const double r_release = *release;
+    out.at_depth = [path, r_release, big_a](double depth_mm) -> std::optional<CurvePoint> {
+      const auto st = path->family().state_at_depth(depth_mm / big_a, r_release);
+      if (!st) return std::nullopt;
+      return path->point(*st);
+    };
+    return out;
+  }
+}
+
+}  // namespace puncture::detail
