@@ -102,6 +102,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     }
     const double d = depth / big_a;
     std::optional<ScaledSolution> sol;
+    double f_predicted = 0.0;  // the predictor's force at d, if any
     if (d > 0.0 && !predictor.usable()) {
       // Seed a new segment with one solve at a known force: a small one at the start of the
       // curve (the power-law predictor carries it to the first depth), the held force at the
@@ -119,6 +120,7 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     if (d > 0.0 && predictor.usable()) {
       const Configuration c = expected_configuration(depth, stage);
       auto guess = predictor.at(d, shooting.parameter_floor(c));
+      f_predicted = guess[0];
       if (c != last_configuration) {
         newton.reset();
         if (c == contact.configuration(Stage::Slip, true) && change) {
@@ -140,8 +142,14 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
     }
     if (!sol) {
       newton.reset();
-      const double f_guess = predictor.history.empty() ? 0.0 : predictor.history.back()[1];
       using Contact = std::decay_t<decltype(contact)>;
+      // On a noisy model the fallback's force search starts from the predictor's force, not the
+      // last point's (at the curve's first points, f ~ depth^3, that cost two more force solves).
+      const bool from_prediction =
+          noisy_near_zero_load<Contact>() && std::isfinite(f_predicted) && f_predicted > 0.0;
+      const double f_guess = from_prediction             ? f_predicted
+                             : predictor.history.empty() ? 0.0
+                                                         : predictor.history.back()[1];
       const double noise_tol =
           noisy_near_zero_load<Contact>() ? kNoiseLimitedResidual * curve_tol : 0.0;
       sol = shooting.solve_at_depth(stage, d, f_guess, noise_tol);
