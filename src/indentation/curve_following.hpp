@@ -80,6 +80,8 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
   const auto& contact = shooting.contact();
   DepthNewton<Shooting> newton(shooting, curve_tol);
   newton.without_maxima(true);  // only the points' own states need their largest I1
+  if constexpr (noisy_near_zero_load<std::decay_t<decltype(contact)>>())
+    newton.extrapolated_jacobian();  // (the flat punch's points kept as they were)
   Predictor predictor;
   Stage segment_stage = boundary.first_stage;
   Configuration last_configuration = Configuration::Unloaded;
