@@ -159,10 +159,9 @@ class DepthNewton {
   static constexpr int kMaxIterations = 10;
   static constexpr double kLogStep = 1e-5;
   static constexpr double kRefreshContraction = 0.8;
-  static constexpr int kNoiseSteps = 3;
-  static constexpr double kMaxExtrapolation =
-      2.0;  // the next depth at most 2 spacings on  // guarded: steps that met only noise, for its
-            // best state
+  static constexpr int kNoiseSteps = 3;  // guarded: steps that met only noise, for its best state
+  // extrapolated_jacobian(): the next depth at most this many spacings on.
+  static constexpr double kMaxExtrapolation = 2.0;
 
   bool finite_difference_jacobian(Configuration c, const Eigen::Vector2d& x,
                                   const Eigen::Vector2d& r) {
