@@ -1075,7 +1075,8 @@ class SphereTippedContact {
     const ForceOnset& a = *onsets_[0];
     const ForceOnset& b = *onsets_[1];
     const ForceOnset& near = std::abs(f - a.f) <= std::abs(f - b.f) ? a : b;
-    if (!(std::abs(f - near.f) <= kOnsetSecantReach * f)) return onset_by_power_law(f);
+    if (!(std::abs(f - near.f) <= kOnsetSecantReach * f))
+      return pressure_ == 0.0 ? onset_by_power_law(f) : std::nullopt;
     // The start: Lambda_e(f) through the last three onsets (Newton's divided differences), else
     // the last two; the slope dV/dLambda there.
     const double dl_ab = (a.onset.stretch - b.onset.stretch) / (a.f - b.f);
@@ -1092,7 +1093,8 @@ class SphereTippedContact {
     }
     return onset_secant_steps(f, l, dl_df, kOnsetSecantSteps);
   }
-  // Farther from the last onsets (the puncture's search, the curve's first points): started from
+  // Farther from the last onsets (the puncture's search, the curve's first points), without a gas
+  // pressure (V_e then grows with the stretch from 0 at 1: one root): started from
   // the power law Lambda_e - 1 ~ f^k through the two last onsets of distinct forces, which
   // leaves the start a few per cent off, and more steps.  The same root: the secant's steps end
   // as above, or the bracketing search runs.
@@ -1115,7 +1117,8 @@ class SphereTippedContact {
   // rounding (up to ~3e-14 relative in the stretch near locking, where V is flat) may keep every
   // step above kOnsetStretchTol: once a step within kOnsetNoiseStep (relative) fails to halve the
   // one before, the steps have reached that rounding, and the stretch with the smallest |V - f|
-  // met is the root (as TOMS 748's bracket of 4 ulps, one of the stretches V's rounding leaves).
+  // met is the root (as TOMS 748's bracket of 4 ulps, one of the stretches V's rounding leaves;
+  // without a gas pressure, where it was measured).
   std::optional<EquatorOnset> onset_secant_steps(double f, double l, double dl_df,
                                                  int steps) const {
     double slope = 1.0 / dl_df, l_prev = 0.0, g_prev = 0.0, last_step = 0.0;
@@ -1137,7 +1140,8 @@ class SphereTippedContact {
         best = onset;
         best_g = std::abs(g);
       }
-      if (k > 0 && std::abs(step) <= kOnsetNoiseStep * l && std::abs(step) > 0.5 * last_step)
+      if (pressure_ == 0.0 && k > 0 && std::abs(step) <= kOnsetNoiseStep * l &&
+          std::abs(step) > 0.5 * last_step)
         return kept_onset(f, std::move(best));
       last_step = std::abs(step);
       l_prev = l;
