@@ -13,6 +13,7 @@
 // failure falls back to the bracketing solver (IndentationShooting::solve_at_depth).
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -42,7 +43,18 @@ class DepthNewton {
       : solver_(solver), tol_(residual_tol), record_(record), control_(control) {}
 
   // Forget the Jacobian (a new configuration starts).
-  void reset() { have_jacobian_ = false; }
+  void reset() {
+    have_jacobian_ = false;
+    kept_ = 0;
+  }
+
+  // Along a curve of equally spaced depths, each solve starts from the Jacobian extrapolated
+  // linearly in the depth from those the last two solves ended with.  On the sphere-tipped probe
+  // the pair is ill-conditioned (det J ~ 3 % of its terms' products): the Jacobian drifts by
+  // ~1 % a point, Broyden's carried one left steps contracting by only ~0.3, and a point took
+  // ~5 evaluations on the hemisphere; extrapolated, ~4 (bench/README.md).  Only the start of
+  // Newton changes, not what it accepts.
+  void extrapolated_jacobian() { extrapolate_ = true; }
 
   // The iterations skip the search for the largest I1 between the steps (IndentationShooting::
   // assemble's `maxima`, about half of an evaluation); the state found is assembled again with
@@ -84,6 +96,7 @@ class DepthNewton {
     bool sol_has_maxima = maxima_;
     if (!sol.integrated) return std::nullopt;
     Eigen::Vector2d r = value(sol);
+    if (extrapolate_ && have_jacobian_) extrapolate_jacobian(c, depth);
     // Guarded: the state with the smallest residual so far, and the steps that met only noise.
     std::optional<ScaledSolution> best;
     double best_residual = 0.0;
@@ -147,6 +160,8 @@ class DepthNewton {
   static constexpr double kLogStep = 1e-5;
   static constexpr double kRefreshContraction = 0.8;
   static constexpr int kNoiseSteps = 3;  // guarded: steps that met only noise, for its best state
+  // extrapolated_jacobian(): the next depth at most this many spacings on.
+  static constexpr double kMaxExtrapolation = 2.0;
 
   bool finite_difference_jacobian(Configuration c, const Eigen::Vector2d& x,
                                   const Eigen::Vector2d& r) {
@@ -180,6 +195,7 @@ class DepthNewton {
   // The solution passed Newton's test on both residuals (its own tolerance) after `steps`.
   ScaledSolution accepted(ScaledSolution sol, bool has_maxima, int steps) {
     last_steps_ = steps;
+    if (extrapolate_) keep_jacobian(sol.configuration);
     if (!has_maxima && reassemble_ && control_ == DepthControl::Force) {
       ++evaluations_;
       sol = solver_.assemble(sol.configuration, sol.f, sol.parameter, record_);
@@ -187,6 +203,27 @@ class DepthNewton {
     accept_state(sol);
     sol.evaluations = evaluations_;
     return sol;
+  }
+
+  // The Jacobian this solve ends with, and the last one before it, for the next solve's start.
+  void keep_jacobian(Configuration c) {
+    if (!have_jacobian_ || (kept_ > 0 && kept_configuration_ != c)) kept_ = 0;
+    if (!have_jacobian_) return;
+    kept_jacobian_[1] = kept_jacobian_[0];
+    kept_depth_[1] = kept_depth_[0];
+    kept_jacobian_[0] = jacobian_;
+    kept_depth_[0] = depth_;
+    kept_configuration_ = c;
+    kept_ = std::min(kept_ + 1, 2);
+  }
+  void extrapolate_jacobian(Configuration c, double depth) {
+    if (kept_ < 2 || kept_configuration_ != c || !(kept_depth_[0] != kept_depth_[1])) return;
+    const double t = (depth - kept_depth_[0]) / (kept_depth_[0] - kept_depth_[1]);
+    if (!(t > 0.0 && t <= kMaxExtrapolation)) return;  // the next depth, not a jump or a return
+    const Eigen::Matrix2d j = kept_jacobian_[0] + t * (kept_jacobian_[0] - kept_jacobian_[1]);
+    if (!j.allFinite() || !(std::abs(j.determinant()) > 0.0)) return;
+    jacobian_ = j;
+    lu_.compute(jacobian_);
   }
 
   // The residuals of a state, each relative to its scale (solve()).
@@ -221,7 +258,13 @@ class DepthNewton {
   double contraction_ = 0.1;
   // Steps the last solve took: along a curve the points converge after about as many.
   int last_steps_ = kMaxIterations;
-  int evaluations_ = 0;  // of the current solve
+  int evaluations_ = 0;       // of the current solve
+  bool extrapolate_ = false;  // extrapolated_jacobian()
+  // The Jacobians the last two solves ended with (the last first), their depths, configuration.
+  std::array<Eigen::Matrix2d, 2> kept_jacobian_;
+  std::array<double, 2> kept_depth_{0.0, 0.0};
+  Configuration kept_configuration_ = Configuration::Unloaded;
+  int kept_ = 0;
 };
 
 }  // namespace puncture::detail

@@ -1,7 +1,9 @@
 // DepthNewton::guarded (indentation/depth_newton.hpp) on a model shooting whose depth carries
 // rounding-like noise of a chosen size: Newton cannot meet its tolerance below that noise, and the
 // guarded solve then returns its best state when the noise is within its noise tolerance, and
-// nothing when it is not; without noise the guarded solve is Newton's own.
+// nothing when it is not; without noise the guarded solve is Newton's own.  Along a curve's
+// depths, the Jacobian extrapolated from the last two solves' (extrapolated_jacobian) reaches
+// the plain solver's states.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -9,6 +11,7 @@
 #include <cstdint>
 
 #include "indentation/depth_newton.hpp"
+#include "solver_test_support.hpp"
 
 namespace puncture::test {
 namespace {
@@ -86,6 +89,37 @@ TEST(DepthNewtonNoise, WithoutNoiseTheGuardChangesNothing) {
   EXPECT_EQ(a->f, b->f);
   EXPECT_EQ(a->parameter, b->parameter);
   EXPECT_LE(std::abs(a->depth - d) / d, 1e-9);
+}
+
+// Along equally spaced depths (a curve's points), each solve started from the last point's state:
+// with the Jacobian extrapolated from those the last two solves ended with
+// (DepthNewton::extrapolated_jacobian) every point meets the same tolerance, and its state is the
+// plain solver's to that tolerance (the pair's root: f = f0 (d / d0)^(24/5), e = e0 (f / f0)^(1/2),
+// each residual within 1e-9 of it: the force within 4.8 x that, doubled for the two solves).
+TEST(DepthNewtonNoise, ExtrapolatedJacobianReachesThePlainSolversStates) {
+  const NoisyModelShooting model{0.0};
+  DepthNewton<NoisyModelShooting> plain(model, 1e-9), extrapolated(model, 1e-9);
+  extrapolated.extrapolated_jacobian();
+  double f_plain = 1.4e-7, p_plain = 1.0 + 2.7e-4, f_ext = f_plain, p_ext = p_plain;
+  int evaluations_plain = 0, evaluations_extrapolated = 0;
+  for (int k = 1; k <= 40; ++k) {
+    const double d = NoisyModelShooting::kD0 * (1.0 + 0.02 * k);
+    const auto a = plain.solve(kNoisyModelConfiguration, d, f_plain, p_plain);
+    const auto b = extrapolated.solve(kNoisyModelConfiguration, d, f_ext, p_ext);
+    ASSERT_TRUE(a && b) << k;
+    evaluations_plain += a->evaluations;
+    evaluations_extrapolated += b->evaluations;
+    const double f_exact = NoisyModelShooting::kF0 * std::pow(d / NoisyModelShooting::kD0, 4.8);
+    EXPECT_LE(std::abs(a->f - f_exact) / f_exact, 4.8 * 2e-9) << k;
+    EXPECT_LE(std::abs(b->f - f_exact) / f_exact, 4.8 * 2e-9) << k;
+    EXPECT_LE(std::abs(b->f - a->f) / a->f, 2.0 * 4.8 * 2e-9) << k;
+    f_plain = a->f;
+    p_plain = a->parameter;
+    f_ext = b->f;
+    p_ext = b->parameter;
+  }
+  record("depth_newton_evaluations_plain_40_points", evaluations_plain);
+  record("depth_newton_evaluations_extrapolated_40_points", evaluations_extrapolated);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // hemisphere, and the refusal of what is not implemented (stick).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/roots.hpp>
@@ -493,6 +494,82 @@ TEST(SphereTipped, EquatorOnsetFromTheLastOnesIsTheBracketedOne) {
   }
   record("equator_onset_stretch_secant_vs_bracketed", worst_stretch);
   record("equator_onset_radius_secant_vs_bracketed", worst_radius);
+}
+
+// Onsets far from the last ones (#17): the forces of the puncture's search and of the curve's
+// first points (jumps of 1e2 to 1e5 in f, from secant starts on the power law Lambda_e - 1 ~ f^k
+// through the last two onsets) and the curve's points near locking (f 0.19 to 0.2, Lambda_e
+// ~6.5, where V's rounding keeps the secant's steps ~2e-13 and the root is the stretch of
+// least |V - f| they met).  The same root as the bracketed one to V's rounding: 1e-13.
+TEST(SphereTipped, EquatorOnsetFarFromTheLastOnesIsTheBracketedOne) {
+  const Problem p = sphere_problem();
+  const SolverOptions o;
+  const auto along = make_shooting(p, o);
+  const auto& warm = along.contact();
+  double worst_stretch = 0.0;
+  for (const double f : {0.05,
+                         0.15,
+                         0.35,
+                         0.262786,
+                         0.247985,
+                         1e-4,
+                         1.30423e-6,
+                         1.3845e-7,
+                         5.59068e-7,
+                         0.0907893,
+                         0.191102,
+                         0.192976,
+                         0.192976 * (1.0 + 1e-5),
+                         0.194856,
+                         0.196743,
+                         0.198636}) {
+    const auto found = warm.equator_onset(f);
+    const auto fresh = make_shooting(p, o);
+    const auto bracketed = fresh.contact().equator_onset(f);
+    ASSERT_TRUE(found && bracketed) << f;
+    const double d_stretch = std::abs(found->stretch - bracketed->stretch) / bracketed->stretch;
+    EXPECT_LE(d_stretch, 1e-13) << f;
+    worst_stretch = std::max(worst_stretch, d_stretch);
+  }
+  record("equator_onset_stretch_far_secant_vs_bracketed", worst_stretch);
+}
+
+// The 200-point curve to puncture (the benchmark's, #17) at the default curve tolerance against
+// the same curve at 1e-11: the points' depths are the grid's (the puncture's the same to 1e-12),
+// and the forces agree to the curve's own accuracy: its Newton stops at relative residuals of
+// 1e-9, d ln F / d ln depth ~ 3 amplifies that, and the first points end on the evaluations'
+// noise (up to 1e-7 relative residuals, kNoiseLimitedResidual): 9.2e-9 at the first point,
+// below 1e-9 at half of them.
+TEST(SphereTipped, TwoHundredPointCurveMatchesATightCurve) {
+  const Problem p = sphere_problem();
+  CurveOptions curve;
+  curve.points = 200;
+  SolverOptions tight;
+  tight.curve_tol = 1e-11;
+  const auto usual = loading_curve(p, curve);
+  const auto reference = loading_curve(p, curve, tight);
+  ASSERT_TRUE(usual.ok()) << usual.message;
+  ASSERT_TRUE(reference.ok()) << reference.message;
+  ASSERT_EQ(usual.points.size(), reference.points.size());
+  EXPECT_NEAR(
+      usual.puncture.depth_mm, reference.puncture.depth_mm, 1e-12 * reference.puncture.depth_mm);
+  std::vector<double> relative;
+  for (std::size_t k = 0; k < usual.points.size(); ++k) {
+    const auto& a = usual.points[k];
+    const auto& b = reference.points[k];
+    EXPECT_NEAR(a.depth_mm, b.depth_mm, 1e-12 * b.depth_mm) << k;
+    if (b.force_n == 0.0) {
+      EXPECT_EQ(a.force_n, 0.0) << k;
+      continue;
+    }
+    relative.push_back(std::abs(a.force_n - b.force_n) / b.force_n);
+    EXPECT_LE(relative.back(), 2e-8) << k;
+  }
+  std::sort(relative.begin(), relative.end());
+  const double median = relative[relative.size() / 2];
+  EXPECT_LE(median, 1e-9);
+  record("curve200_force_vs_tight_max", relative.back());
+  record("curve200_force_vs_tight_median", median);
 }
 
 // A probe of radius 20 mm on the 25 mm membrane (#17): its equator lies past the clamp for the

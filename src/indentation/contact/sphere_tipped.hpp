@@ -1071,8 +1071,8 @@ class SphereTippedContact {
   // V's rounding: that closes a bracket to 4 ulps, these steps converge superlinearly from a
   // start ~1e-10 (a Jacobian's column) to ~1e-5 (the next curve point) off until the next
   // step is within 16 ulps, where V's rounding (1e-15 to 1e-14 relative) leaves any root: the
-  // two agree to ~1e-14 in the stretch (sphere_tipped_test).  Empty when there is no history
-  // near f, a step leaves the
+  // two agree to ~1e-14 in the stretch (sphere_tipped_test).  Without a history near f, from
+  // a power law (onset_by_power_law).  Empty when there is no history, a step leaves the
   // stretches above 1 or the material's domain, or the steps do not converge: the bracketing
   // search runs then.
   std::optional<EquatorOnset> onset_by_secant(double f) const {
@@ -1080,7 +1080,8 @@ class SphereTippedContact {
     const ForceOnset& a = *onsets_[0];
     const ForceOnset& b = *onsets_[1];
     const ForceOnset& near = std::abs(f - a.f) <= std::abs(f - b.f) ? a : b;
-    if (!(std::abs(f - near.f) <= kOnsetSecantReach * f)) return std::nullopt;
+    if (!(std::abs(f - near.f) <= kOnsetSecantReach * f))
+      return pressure_ == 0.0 ? onset_by_power_law(f) : std::nullopt;
     // The start: Lambda_e(f) through the last three onsets (Newton's divided differences), else
     // the last two; the slope dV/dLambda there.
     const double dl_ab = (a.onset.stretch - b.onset.stretch) / (a.f - b.f);
@@ -1095,9 +1096,41 @@ class SphereTippedContact {
         dl_df = slope2;
       }
     }
-    double slope = 1.0 / dl_df, l_prev = 0.0, g_prev = 0.0;
+    return onset_secant_steps(f, l, dl_df, kOnsetSecantSteps);
+  }
+  // Farther from the last onsets (the puncture's search, the curve's first points), without a gas
+  // pressure (V_e then grows with the stretch from 0 at 1: one root): started from
+  // the power law Lambda_e - 1 ~ f^k through the two last onsets of distinct forces, which
+  // leaves the start a few per cent off, and more steps.  The same root: the secant's steps end
+  // as above, or the bracketing search runs.
+  std::optional<EquatorOnset> onset_by_power_law(double f) const {
+    const ForceOnset& a = *onsets_[0];
+    const ForceOnset* b = nullptr;
+    for (const auto& known : {onsets_[1], onsets_[2]})
+      if (known && known->f != a.f && !b) b = &*known;
+    if (!b || !(a.f > 0.0) || !(b->f > 0.0)) return std::nullopt;
+    const double ea = a.onset.stretch - 1.0, eb = b->onset.stretch - 1.0;
+    if (!(ea > 0.0) || !(eb > 0.0)) return std::nullopt;
+    const double power = std::log(ea / eb) / std::log(a.f / b->f);
+    if (!(power > 0.0) || !std::isfinite(power)) return std::nullopt;
+    // From the onset nearer f in log f.
+    const ForceOnset& near = std::abs(std::log(f / a.f)) <= std::abs(std::log(f / b->f)) ? a : *b;
+    const double e = (near.onset.stretch - 1.0) * std::pow(f / near.f, power);
+    return onset_secant_steps(f, 1.0 + e, power * e / f, kOnsetFarSteps);
+  }
+  // Secant steps on V at the equator - f from pole stretch l, with dLambda/df = dl_df there.  V's
+  // rounding (up to ~3e-14 relative in the stretch near locking, where V is flat) may keep every
+  // step above kOnsetStretchTol: once a step within kOnsetNoiseStep (relative) fails to halve the
+  // one before, the steps have reached that rounding, and the stretch with the smallest |V - f|
+  // met is the root (as TOMS 748's bracket of 4 ulps, one of the stretches V's rounding leaves;
+  // without a gas pressure, where it was measured).
+  std::optional<EquatorOnset> onset_secant_steps(double f, double l, double dl_df,
+                                                 int steps) const {
+    double slope = 1.0 / dl_df, l_prev = 0.0, g_prev = 0.0, last_step = 0.0;
     if (!(slope > 0.0) || !std::isfinite(slope)) return std::nullopt;
-    for (int k = 0; k < kOnsetSecantSteps; ++k) {
+    std::optional<EquatorOnset> best;
+    double best_g = 0.0;
+    for (int k = 0; k < steps; ++k) {
       if (!(l > 1.0) || !std::isfinite(l)) return std::nullopt;
       auto onset = cap_to_equator(l);
       if (!onset) return std::nullopt;
@@ -1108,6 +1141,14 @@ class SphereTippedContact {
       }
       const double step = -g / slope;
       if (std::abs(step) <= kOnsetStretchTol * l) return kept_onset(f, std::move(onset));
+      if (!best || std::abs(g) < best_g) {
+        best = onset;
+        best_g = std::abs(g);
+      }
+      if (pressure_ == 0.0 && k > 0 && std::abs(step) <= kOnsetNoiseStep * l &&
+          std::abs(step) > 0.5 * last_step)
+        return kept_onset(f, std::move(best));
+      last_step = std::abs(step);
       l_prev = l;
       g_prev = g;
       l += step;
@@ -1119,6 +1160,8 @@ class SphereTippedContact {
   // relative size that makes its start the root; a slope is updated only from stretches this far
   // apart (relative: closer, V's rounding would dominate it).
   static constexpr int kOnsetSecantSteps = 6;
+  static constexpr int kOnsetFarSteps = 10;
+  static constexpr double kOnsetNoiseStep = 1e-12;
   static constexpr double kOnsetSecantReach = 0.2;
   static constexpr double kOnsetStretchTol = 16.0 * std::numeric_limits<double>::epsilon();
   static constexpr double kOnsetSlopeSpan = 1e-12;
