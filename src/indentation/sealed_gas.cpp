@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "indentation/curve_point_of.hpp"
 #include "indentation/enclosed_volume.hpp"
 #include "indentation/inflated_dome.hpp"
 #include "indentation/path_puncture.hpp"
@@ -405,18 +406,7 @@ LoadingCurve sealed_loading_curve(const Problem& p, const CurveOptions& curve,
       return out;
     }
     pressure = e.gas->pressure_mpa;
-    CurvePoint pt;
-    pt.depth_mm = depth;
-    pt.force_n = e.force_n;
-    pt.normalized_force = e.normalized_force;
-    pt.stage = e.stage;
-    pt.configuration = e.configuration;
-    pt.part_three_stretch = e.part_three_stretch;
-    pt.part_two_length_mm = e.part_two_length_mm;
-    pt.corner_slope_rad = e.corner_slope_rad;
-    pt.contact_edge_radius_mm = e.contact_edge_radius_mm;
-    pt.contact_edge_height_mm = e.contact_edge_height_mm;
-    pt.max_first_invariant = e.max_first_invariant;
+    CurvePoint pt = curve_point_of(e, depth);
     pt.beyond_puncture =
         e.beyond_puncture || (out.puncture.ok() && depth > out.puncture.depth_mm * (1.0 + 1e-9));
     pt.gas = e.gas;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "indentation/curve_events.hpp"
+#include "indentation/curve_point_of.hpp"
 #include "indentation/inflated_dome.hpp"
 #include "indentation/solver_scales.hpp"
 #include "puncture/equilibrium.hpp"
@@ -16,23 +17,6 @@ namespace puncture::detail {
 namespace {
 
 std::string landing_num(double x) { return fmt::format("{:.6g}", x); }
-
-// The curve's point of a state solved at a depth, at `depth_mm` on the curve.
-CurvePoint landing_point(const Equilibrium& e, double depth_mm) {
-  CurvePoint pt;
-  pt.depth_mm = depth_mm;
-  pt.force_n = e.force_n;
-  pt.normalized_force = e.normalized_force;
-  pt.stage = e.stage;
-  pt.configuration = e.configuration;
-  pt.part_three_stretch = e.part_three_stretch;
-  pt.part_two_length_mm = e.part_two_length_mm;
-  pt.corner_slope_rad = e.corner_slope_rad;
-  pt.max_first_invariant = e.max_first_invariant;
-  pt.contact_edge_radius_mm = e.contact_edge_radius_mm;
-  pt.contact_edge_height_mm = e.contact_edge_height_mm;
-  return pt;
-}
 
 }  // namespace
 
@@ -64,7 +48,7 @@ void land_after_snap(const Problem& p, const CurveOptions& curve, const SolverOp
           e.message);
       return;
     }
-    landing = landing_point(e, fold_mm);
+    landing = curve_point_of(e, fold_mm);
   }
   CurveOptions rest_options;
   rest_options.points = curve.points;
@@ -111,7 +95,7 @@ void land_after_snap(const Problem& p, const CurveOptions& curve, const SolverOp
           "{}; the first inflated state's dome: {}", snap.description, free_dome.message);
       return;
     }
-    landing = landing_point(free_dome, fold_mm);  // clear of the probe
+    landing = curve_point_of(free_dome, fold_mm);  // clear of the probe
   }
   landing.depth_mm = fold_mm;
   out.points.push_back(landing);
