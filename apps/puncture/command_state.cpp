@@ -30,7 +30,12 @@ StageChoice automatic_stage(const Problem& problem, const StateFlags& f, bool by
             "cannot locate the stick -> slip switch ({}): {}", to_string(b.status), b.message),
         b.status);
   if (b.first_stage == Stage::Slip)
-    return {Stage::Slip, "auto: with --stick none the membrane slides from the first touch"};
+    return {Stage::Slip,
+            problem.stick.rule == StickRule::None
+                ? "auto: with --stick none the membrane slides from the first touch"
+                : "auto: the --stick rule releases at the first touch (as coulomb does on a "
+                  "stress-free membrane: friction cannot hold the first material touched, "
+                  "docs/model.md section 15.4): the membrane slides from the first touch"};
   if (!b.switches) return {Stage::Stick, "auto: with --stick always the membrane is held"};
   if (by_force) {
     const bool stuck = f.force_n <= b.force_stuck_n;
