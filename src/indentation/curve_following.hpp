@@ -105,11 +105,12 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
   const auto& contact = shooting.contact();
   DepthNewton<Shooting> newton(shooting, curve_tol);
   newton.without_maxima(true);  // only the points' own states need their largest I1
-  // On a noisy model without a gas pressure or a stick stage (where it was measured,
-  // bench/README.md); the flat punch's points, the inflated membranes' paths and the held
-  // stages (whose switch points and partial slip start from their own states) kept as they were.
+  // On a noisy model without a gas pressure, sliding from the first touch (where it was
+  // measured, bench/README.md; any rule that holds nothing gives the same curve); the flat
+  // punch's points, the inflated membranes' paths and curves with a held stage (whose switch
+  // points and partial slip start from their own states) kept as they were.
   const bool sped_up = noisy_near_zero_load<std::decay_t<decltype(contact)>>() &&
-                       p.preload.pressure_mpa == 0.0 && p.stick.rule == StickRule::None;
+                       p.preload.pressure_mpa == 0.0 && boundary.first_stage == Stage::Slip;
   if (sped_up) newton.extrapolated_jacobian();
   Predictor predictor;
   Stage segment_stage = boundary.first_stage;
