@@ -111,7 +111,10 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
   // points and partial slip start from their own states) kept as they were.
   const bool sped_up = noisy_near_zero_load<std::decay_t<decltype(contact)>>() &&
                        p.preload.pressure_mpa == 0.0 && boundary.first_stage == Stage::Slip;
-  if (sped_up) newton.extrapolated_jacobian();
+  if (sped_up) {
+    newton.extrapolated_jacobian();
+    newton.valley_start();
+  }
   Predictor predictor;
   Stage segment_stage = boundary.first_stage;
   Configuration last_configuration = Configuration::Unloaded;

@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
+#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <optional>
 
@@ -56,6 +57,16 @@ class DepthNewton {
   // Newton changes, not what it accepts.
   void extrapolated_jacobian() { extrapolate_ = true; }
 
+  // A solve whose start's residuals exceed kValleyResidual first brings the clamp residual to
+  // kValleyClamp by the parameter alone, at the start's force (valley_start_search), and takes
+  // Newton's Jacobian there.  On the sphere-tipped probe near zero load the pair is so
+  // ill-conditioned (det J ~ 0.2 % of its terms' products at the curve's second point) that
+  // a start 1 % off in p - 1 lies outside Newton's basin (its first step went 60 % too far in
+  // f), while the states with the clamp condition met form a valley along which it converges:
+  // the curve's second and third points took 107 and 99 marches of the cap through the
+  // fallback's force searches, now 24 and 13 (bench/README.md).
+  void valley_start() { valley_ = true; }
+
   // The iterations skip the search for the largest I1 between the steps (IndentationShooting::
   // assemble's `maxima`, about half of an evaluation); the state found is assembled again with
   // it when `reassemble` (the same integration: the same state), else the caller does so.
@@ -97,6 +108,8 @@ class DepthNewton {
     if (!sol.integrated) return std::nullopt;
     Eigen::Vector2d r = value(sol);
     if (extrapolate_ && have_jacobian_) extrapolate_jacobian(c, depth);
+    if (valley_ && r.cwiseAbs().maxCoeff() > kValleyResidual && !valley_start_search(c, x, sol, r))
+      return std::nullopt;
     // Guarded: the state with the smallest residual so far, and the steps that met only noise.
     std::optional<ScaledSolution> best;
     double best_residual = 0.0;
@@ -157,6 +170,81 @@ class DepthNewton {
 
  private:
   static constexpr int kMaxIterations = 10;
+  static constexpr double kValleyResidual = 1e-3;
+  static constexpr double kValleyClamp = 1e-4;
+  static constexpr int kValleySteps = 12;
+
+  // valley_start(): from x (state sol, residuals r), secant steps in log(p - p0) alone on the
+  // clamp residual until it changes sign, then TOMS 748 on that bracket, until |clamp| <=
+  // kValleyClamp; x, sol and r become that state's, and the Jacobian is taken afresh there.
+  // False when a state fails to integrate or no bracket is found in kValleySteps.
+  bool valley_start_search(Configuration c, Eigen::Vector2d& x, ScaledSolution& sol,
+                           Eigen::Vector2d& r) {
+    struct Trial {
+      double x1;
+      Eigen::Vector2d r;
+      ScaledSolution state;
+    };
+    bool failed = false;
+    const auto at = [&](double x1) {
+      Trial t{x1, Eigen::Vector2d::Zero(), {}};
+      Eigen::Vector2d xn = x;
+      xn[1] = x1;
+      t.state = evaluate(c, xn, false);
+      if (t.state.integrated)
+        t.r = value(t.state);
+      else
+        failed = true;
+      return t;
+    };
+    Trial lo{x[1], r, sol};
+    Trial probe = at(x[1] + kLogStep);
+    if (failed) return false;
+    double slope = (probe.r[0] - lo.r[0]) / kLogStep;
+    std::optional<Trial> hi;
+    Trial best = lo;
+    auto keep_best = [&](const Trial& t) {
+      if (std::abs(t.r[0]) < std::abs(best.r[0])) best = t;
+    };
+    for (int k = 0; k < kValleySteps && !hi && std::abs(best.r[0]) > kValleyClamp; ++k) {
+      if (!(slope != 0.0) || !std::isfinite(slope)) return false;
+      Trial next = at(lo.x1 - lo.r[0] / slope);
+      if (failed) return false;
+      keep_best(next);
+      if ((next.r[0] > 0.0) != (lo.r[0] > 0.0)) {
+        hi = std::move(next);
+      } else {
+        slope = (next.r[0] - lo.r[0]) / (next.x1 - lo.x1);
+        lo = std::move(next);
+      }
+    }
+    if (hi && std::abs(best.r[0]) > kValleyClamp) {
+      std::uintmax_t iterations = kValleySteps;
+      const bool lo_first = lo.x1 < hi->x1;
+      const Trial& left = lo_first ? lo : *hi;
+      const Trial& right = lo_first ? *hi : lo;
+      boost::math::tools::toms748_solve(
+          [&](double x1) {
+            Trial t = at(x1);
+            if (failed) return 0.0;  // ends the search: failed is tested below
+            keep_best(t);
+            return t.r[0];
+          },
+          left.x1,
+          right.x1,
+          left.r[0],
+          right.r[0],
+          [&](double, double) { return failed || std::abs(best.r[0]) <= kValleyClamp; },
+          iterations);
+      if (failed) return false;
+    }
+    if (!(std::abs(best.r[0]) <= kValleyClamp)) return false;
+    x[1] = best.x1;
+    r = best.r;
+    sol = std::move(best.state);
+    have_jacobian_ = false;
+    return true;
+  }
   static constexpr double kLogStep = 1e-5;
   static constexpr double kRefreshContraction = 0.8;
   static constexpr int kNoiseSteps = 3;  // guarded: steps that met only noise, for its best state
@@ -260,6 +348,7 @@ class DepthNewton {
   int last_steps_ = kMaxIterations;
   int evaluations_ = 0;       // of the current solve
   bool extrapolate_ = false;  // extrapolated_jacobian()
+  bool valley_ = false;       // valley_start()
   // The Jacobians the last two solves ended with (the last first), their depths, configuration.
   std::array<Eigen::Matrix2d, 2> kept_jacobian_;
   std::array<double, 2> kept_depth_{0.0, 0.0};

@@ -122,5 +122,60 @@ TEST(DepthNewtonNoise, ExtrapolatedJacobianReachesThePlainSolversStates) {
   record("depth_newton_evaluations_extrapolated_40_points", evaluations_extrapolated);
 }
 
+// DepthNewton::valley_start on a pair whose clamp residual is steep in the pole strain, as the
+// sphere-tipped probe's near zero load (at its curve's second point the clamp residual went from
+// +0.11 to the turned-back stand-in over 1 % of p - 1): at force f and pole strain e, clamp
+// residual (e / e_c(f))^K - 1 with e_c = e0 (f / f0)^(1/2) and K = 100, and the depth of
+// NoisyModelShooting (noise-free).  The root: e = e_c(f), d = d0 (f / f0)^(5/24) as there.
+struct SteepClampShooting {
+  static constexpr double kSteepness = 100.0, kTurnsBack = 0.99;
+  double parameter_floor(Configuration) const { return 1.0; }
+  ScaledSolution assemble(Configuration c, double f, double p, bool, bool = true) const {
+    ScaledSolution s;
+    s.configuration = c;
+    s.f = f;
+    s.parameter = p;
+    const double e = p - 1.0;
+    const double e_c = NoisyModelShooting::kE0 * std::sqrt(f / NoisyModelShooting::kF0);
+    // Judged relative to e, as the solver does: (e / e_c)^K - 1 times e.
+    // Below 0.99 e_c the membrane turns back: the shooting's stand-in, -1 of the scale.
+    s.residual = e < kTurnsBack * e_c ? -e : e * std::expm1(kSteepness * std::log(e / e_c));
+    s.depth = NoisyModelShooting::kD0 * std::cbrt(f / NoisyModelShooting::kF0) *
+              std::pow(e / NoisyModelShooting::kE0, -0.25);
+    s.integrated = std::isfinite(s.residual);
+    s.status = Status::Converged;
+    return s;
+  }
+  ScaledSolution assemble_at_contact(Configuration c, double q, double p, bool) const {
+    return assemble(c, q - p, p, false);
+  }
+};
+
+// From a start 0.6 % off in f and 1 % off in e (the sphere's curve's second point's predictor),
+// the valley start meets both residuals to the tolerance: the force within 4.8 x 1e-9 of the
+// root, the strain within 1e-9, in at most 25 evaluations (13).  On this smooth model plain
+// Newton converges too (recorded): the sphere's own pair, which it does not (noise, a Jacobian
+// 7 times smaller at the start than at the root), is sphere_tipped_test's
+// ValleyStartSolvesTheCurvesSecondPointFromItsPredictor.
+TEST(DepthNewtonNoise, ValleyStartReachesTheSteepPairsRoot) {
+  const SteepClampShooting model;
+  const double d = 2.0 * NoisyModelShooting::kD0;
+  const double f_exact = NoisyModelShooting::kF0 * std::pow(d / NoisyModelShooting::kD0, 4.8);
+  const double e_exact = NoisyModelShooting::kE0 * std::sqrt(f_exact / NoisyModelShooting::kF0);
+  const double f0 = 1.006 * f_exact, p0 = 1.0 + 1.01 * e_exact;
+  DepthNewton<SteepClampShooting> valley(model, 1e-9);
+  valley.valley_start();
+  const auto s = valley.solve(kNoisyModelConfiguration, d, f0, p0);
+  ASSERT_TRUE(s);
+  EXPECT_LE(std::abs(s->f - f_exact) / f_exact, 4.8 * 1e-9);
+  EXPECT_LE(std::abs(s->parameter - 1.0 - e_exact) / e_exact, 1e-9);
+  EXPECT_LE(s->evaluations, 25);
+  record("depth_newton_valley_start_evaluations", s->evaluations);
+  DepthNewton<SteepClampShooting> plain(model, 1e-9);
+  const auto q = plain.solve(kNoisyModelConfiguration, d, f0, p0);
+  record("depth_newton_plain_from_the_same_start_converged", q ? 1.0 : 0.0);
+  if (q) record("depth_newton_plain_from_the_same_start_evaluations", q->evaluations);
+}
+
 }  // namespace
 }  // namespace puncture::test

@@ -17,8 +17,10 @@
 #include <vector>
 
 #include "foppl_sphere.hpp"
+#include "indentation/depth_newton.hpp"
 #include "indentation/dispatch.hpp"
 #include "indentation/shooting.hpp"
+#include "indentation/solver_scales.hpp"
 #include "mechanics/free_membrane_ode.hpp"
 #include "mechanics/inverse_stretch.hpp"
 #include "numerics/trapezoid.hpp"
@@ -452,12 +454,17 @@ TEST(SphereTipped, TinyForcesInTurnOnOneShooting) {
 }
 
 // The equator onset Lambda_e(f) past the equator (#17): along a curve it is found by secant steps
-// from the last two onsets (their slope) and a force asked again returns its onset; from a
-// fresh contact model the root is bracketed from 1 and closed by TOMS 748 to 4 ulps.  The same
-// root either way, to V's rounding at the equator: a step accepted too early (or a wrong slope's
-// fixed point) would leave it ~1e-10 off at these forces.  The forces follow a loading curve
-// past the onset (f 0.09 to 0.25): a Jacobian's column 1e-5 away and its second at the first
-// force again, the next points ~1 % on, and jumps (beyond the secant's reach: bracketed).
+// from the last onsets (a polynomial through them in log f: the start and its slope) and a force
+// asked again returns its onset; from a fresh contact model the root is bracketed from 1 and
+// closed by TOMS 748 to 4 ulps.  The secant accepts a stretch whose next step is within
+// kOnsetStretchTol = 1e-12 of it (relative), below the march's own error (relative integration
+// tolerance 3e-11): the two roots agree to that, 1e-12 (measured up to 8.5e-13), the contact radius
+// to 2e-12 (it moves ~1.5 times the stretch, relative), and V at the equator meets f to 1e-11 (V's
+// elasticity in the stretch is at most ~5 here: 4.6e-12 measured).  A wrong slope's fixed point
+// or a step accepted too early would leave them ~1e-10 off at these forces.  The forces follow a
+// loading curve past the onset (f 0.09 to 0.25): a Jacobian's column 1e-5 away and its second at
+// the first force again, the next points ~1 % on, and jumps (beyond the secant's reach:
+// bracketed).
 TEST(SphereTipped, EquatorOnsetFromTheLastOnesIsTheBracketedOne) {
   const Problem p = sphere_problem();
   const SolverOptions o;
@@ -484,11 +491,11 @@ TEST(SphereTipped, EquatorOnsetFromTheLastOnesIsTheBracketedOne) {
     ASSERT_TRUE(found && bracketed) << f;
     EXPECT_TRUE(found->end.at_equator && bracketed->end.at_equator) << f;
     // The cap carries f at the equator (frictionless, no gas: its vertical pull).
-    EXPECT_NEAR(found->end.carried, f, 1e-13 * f) << f;
+    EXPECT_NEAR(found->end.carried, f, 1e-11 * f) << f;
     const double d_stretch = std::abs(found->stretch - bracketed->stretch) / bracketed->stretch;
     const double d_radius = std::abs(found->end.r - bracketed->end.r) / bracketed->end.r;
-    EXPECT_LE(d_stretch, 1e-13) << f;
-    EXPECT_LE(d_radius, 1e-12) << f;
+    EXPECT_LE(d_stretch, 1e-12) << f;
+    EXPECT_LE(d_radius, 2e-12) << f;
     worst_stretch = std::max(worst_stretch, d_stretch);
     worst_radius = std::max(worst_radius, d_radius);
   }
@@ -499,8 +506,8 @@ TEST(SphereTipped, EquatorOnsetFromTheLastOnesIsTheBracketedOne) {
 // Onsets far from the last ones (#17): the forces of the puncture's search and of the curve's
 // first points (jumps of 1e2 to 1e5 in f, from secant starts on the power law Lambda_e - 1 ~ f^k
 // through the last two onsets) and the curve's points near locking (f 0.19 to 0.2, Lambda_e
-// ~6.5, where V's rounding keeps the secant's steps ~2e-13 and the root is the stretch of
-// least |V - f| they met).  The same root as the bracketed one to V's rounding: 1e-13.
+// ~6.5, where V's rounding leaves the secant's steps ~2e-13, within its tolerance).  The same
+// root as the bracketed one to the secant's tolerance, 1e-12 (measured up to 4.9e-13).
 TEST(SphereTipped, EquatorOnsetFarFromTheLastOnesIsTheBracketedOne) {
   const Problem p = sphere_problem();
   const SolverOptions o;
@@ -528,10 +535,39 @@ TEST(SphereTipped, EquatorOnsetFarFromTheLastOnesIsTheBracketedOne) {
     const auto bracketed = fresh.contact().equator_onset(f);
     ASSERT_TRUE(found && bracketed) << f;
     const double d_stretch = std::abs(found->stretch - bracketed->stretch) / bracketed->stretch;
-    EXPECT_LE(d_stretch, 1e-13) << f;
+    EXPECT_LE(d_stretch, 1e-12) << f;
     worst_stretch = std::max(worst_stretch, d_stretch);
   }
   record("equator_onset_stretch_far_secant_vs_bracketed", worst_stretch);
+}
+
+// The 200-point curve's second point (0.3077 mm, #17) from its predictor's start, 0.6 % off in f
+// and 1 % in p - 1: there the pair is so ill-conditioned (det J ~ 0.2 % of its terms'
+// products) that Newton's first step went 60 % too far in f, and the curve fell back on force
+// searches (~100 marches of the cap).  The valley start (depth_newton.hpp) meets the clamp
+// condition by p alone first and converges; the state is the force search's (solve_at_depth,
+// independent: a bracketing in f of fixed-force shootings) to the evaluations' noise near zero
+// load (~1e-8 relative in the depth, d ln F / d ln depth ~ 3: 1e-7).
+TEST(SphereTipped, ValleyStartSolvesTheCurvesSecondPointFromItsPredictor) {
+  const Problem p = sphere_problem();
+  const SolverOptions o;
+  const auto shooting = make_shooting(p, o);
+  const double d = 0.3077 / solver_scales(p).length_mm;
+  const double f0 = 1.141088238e-06, p0 = 1.0 + 7.783521681e-4;
+  DepthNewton<GentShooting> valley(shooting, o.curve_tol);
+  valley.valley_start();
+  const auto s = valley.solve(Configuration::SlipWithoutPartTwo, d, f0, p0);
+  ASSERT_TRUE(s);
+  const auto searched = shooting.solve_at_depth(Stage::Slip, d);
+  ASSERT_TRUE(searched.ok()) << searched.message;
+  EXPECT_NEAR(s->f, searched.f, 1e-7 * searched.f);
+  EXPECT_NEAR(s->depth, d, o.curve_tol * d);
+  EXPECT_LE(s->evaluations, 30);
+  record("valley_start_second_point_force_vs_search", std::abs(s->f - searched.f) / searched.f);
+  record("valley_start_second_point_evaluations", s->evaluations);
+  DepthNewton<GentShooting> plain(shooting, o.curve_tol);
+  record("plain_newton_second_point_converged",
+         plain.solve(Configuration::SlipWithoutPartTwo, d, f0, p0) ? 1.0 : 0.0);
 }
 
 // The 200-point curve to puncture (the benchmark's, #17) at the default curve tolerance against

@@ -32,6 +32,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -1065,16 +1066,14 @@ class SphereTippedContact {
   }
 
   // The onset at f by secant steps on V at the equator - f, started from the last onsets found
-  // (Lambda_e(f) through the last three, or two: the start and its slope): the pole stretch whose
-  // next step would move it by at most kOnsetStretchTol (relative) is the root, and its march,
-  // which tracked the largest I1, the onset's (no march again).  The same root as TOMS 748's to
-  // V's rounding: that closes a bracket to 4 ulps, these steps converge superlinearly from a
-  // start ~1e-10 (a Jacobian's column) to ~1e-5 (the next curve point) off until the next
-  // step is within 16 ulps, where V's rounding (1e-15 to 1e-14 relative) leaves any root: the
-  // two agree to ~1e-14 in the stretch (sphere_tipped_test).  Without a history near f, from
-  // a power law (onset_by_power_law).  Empty when there is no history, a step leaves the
-  // stretches above 1 or the material's domain, or the steps do not converge: the bracketing
-  // search runs then.
+  // (Lambda_e(f) through the nearest and the trail of earlier ones: the start and its slope): the
+  // pole stretch whose next step would move it by at most kOnsetStretchTol (relative) is the
+  // root, and its march, which tracked the largest I1, the onset's (no march again).  That
+  // tolerance, 1e-12, lies below the march's own error (relative integration tolerance 3e-11):
+  // the onset differs from TOMS 748's bracketed root by less than that (sphere_tipped_test).
+  // Without a history near f, from a power law (onset_by_power_law).  Empty when there is no
+  // history, a step leaves the stretches above 1 or the material's domain, or the steps do not
+  // converge: the bracketing search runs then.
   std::optional<EquatorOnset> onset_by_secant(double f) const {
     if (!onsets_[0] || !onsets_[1]) return std::nullopt;
     const ForceOnset& a = *onsets_[0];
@@ -1082,22 +1081,42 @@ class SphereTippedContact {
     const ForceOnset& near = std::abs(f - a.f) <= std::abs(f - b.f) ? a : b;
     if (!(std::abs(f - near.f) <= kOnsetSecantReach * f))
       return pressure_ == 0.0 ? onset_by_power_law(f) : std::nullopt;
-    // The start: Lambda_e(f) through the last three onsets (Newton's divided differences), else
-    // the last two; the slope dV/dLambda there.
-    const double dl_ab = (a.onset.stretch - b.onset.stretch) / (a.f - b.f);
-    double l = a.onset.stretch + (f - a.f) * dl_ab, dl_df = dl_ab;
-    if (onsets_[2] && onsets_[2]->f != a.f && onsets_[2]->f != b.f) {
-      const ForceOnset& c = *onsets_[2];
-      const double dl_bc = (b.onset.stretch - c.onset.stretch) / (b.f - c.f);
-      const double d2 = (dl_ab - dl_bc) / (a.f - c.f);
-      const double l2 = l + (f - a.f) * (f - b.f) * d2, slope2 = dl_ab + d2 * (2.0 * f - a.f - b.f);
-      if (std::isfinite(l2) && l2 > 1.0 && slope2 > 0.0 && std::isfinite(slope2)) {
-        l = l2;
-        dl_df = slope2;
-      }
+    // The start: Lambda_e through the nearest onset and the trail of onsets at distinct forces
+    // (one per curve point), a polynomial in log f (Newton's divided differences), and its slope.
+    // Near locking Lambda_e(f) bends sharply: through three onsets a point's first start was
+    // ~5e-6 off, three marches; through six in log f ~3e-9 (median), two.
+    std::array<double, kTrailLength + 1> nx{}, nl{};
+    std::size_t n = 0;
+    const auto add_node = [&](double node_f, double stretch) {
+      if (!(std::abs(node_f - f) <= kOnsetSecantReach * f) || !(node_f > 0.0)) return;
+      for (std::size_t i = 0; i < n; ++i)
+        if (std::abs(std::exp(nx[i]) - node_f) <= kTrailSpacing * f) return;
+      nx[n] = std::log(node_f);
+      nl[n++] = stretch;
+    };
+    add_node(near.f, near.onset.stretch);
+    for (auto it = onset_trail_.rbegin(); it != onset_trail_.rend() && n <= kTrailLength; ++it)
+      add_node(it->first, it->second);
+    if (n < 2) add_node((&near == &a ? b : a).f, (&near == &a ? b : a).onset.stretch);
+    if (n < 2) {  // the two last onsets closer than the trail's spacing: their secant
+      nx = {std::log(a.f), std::log(b.f)};
+      nl = {a.onset.stretch, b.onset.stretch};
+      n = 2;
     }
+    for (std::size_t k = 1; k < n; ++k)
+      for (std::size_t i = n - 1; i >= k; --i) nl[i] = (nl[i] - nl[i - 1]) / (nx[i] - nx[i - k]);
+    const double x = std::log(f);
+    double l = nl[n - 1], dl_dx = 0.0;
+    for (std::size_t i = n - 1; i-- > 0;) {
+      dl_dx = dl_dx * (x - nx[i]) + l;
+      l = l * (x - nx[i]) + nl[i];
+    }
+    const double dl_df = dl_dx / f;
+    if (!(l > 1.0) || !std::isfinite(l) || !(dl_df > 0.0) || !std::isfinite(dl_df))
+      return std::nullopt;
     return onset_secant_steps(f, l, dl_df, kOnsetSecantSteps);
   }
+
   // Farther from the last onsets (the puncture's search, the curve's first points), without a gas
   // pressure (V_e then grows with the stretch from 0 at 1: one root): started from
   // the power law Lambda_e - 1 ~ f^k through the two last onsets of distinct forces, which
@@ -1118,18 +1137,11 @@ class SphereTippedContact {
     const double e = (near.onset.stretch - 1.0) * std::pow(f / near.f, power);
     return onset_secant_steps(f, 1.0 + e, power * e / f, kOnsetFarSteps);
   }
-  // Secant steps on V at the equator - f from pole stretch l, with dLambda/df = dl_df there.  V's
-  // rounding (up to ~3e-14 relative in the stretch near locking, where V is flat) may keep every
-  // step above kOnsetStretchTol: once a step within kOnsetNoiseStep (relative) fails to halve the
-  // one before, the steps have reached that rounding, and the stretch with the smallest |V - f|
-  // met is the root (as TOMS 748's bracket of 4 ulps, one of the stretches V's rounding leaves;
-  // without a gas pressure, where it was measured).
+  // Secant steps on V at the equator - f from pole stretch l, with dLambda/df = dl_df there.
   std::optional<EquatorOnset> onset_secant_steps(double f, double l, double dl_df,
                                                  int steps) const {
-    double slope = 1.0 / dl_df, l_prev = 0.0, g_prev = 0.0, last_step = 0.0;
+    double slope = 1.0 / dl_df, l_prev = 0.0, g_prev = 0.0;
     if (!(slope > 0.0) || !std::isfinite(slope)) return std::nullopt;
-    std::optional<EquatorOnset> best;
-    double best_g = 0.0;
     for (int k = 0; k < steps; ++k) {
       if (!(l > 1.0) || !std::isfinite(l)) return std::nullopt;
       auto onset = cap_to_equator(l);
@@ -1141,14 +1153,6 @@ class SphereTippedContact {
       }
       const double step = -g / slope;
       if (std::abs(step) <= kOnsetStretchTol * l) return kept_onset(f, std::move(onset));
-      if (!best || std::abs(g) < best_g) {
-        best = onset;
-        best_g = std::abs(g);
-      }
-      if (pressure_ == 0.0 && k > 0 && std::abs(step) <= kOnsetNoiseStep * l &&
-          std::abs(step) > 0.5 * last_step)
-        return kept_onset(f, std::move(best));
-      last_step = std::abs(step);
       l_prev = l;
       g_prev = g;
       l += step;
@@ -1158,12 +1162,14 @@ class SphereTippedContact {
   // Secant steps for the onset: at most this many, from an onset whose force is within
   // kOnsetSecantReach of f (relative; farther, the bracketing search); the last step's
   // relative size that makes its start the root; a slope is updated only from stretches this far
-  // apart (relative: closer, V's rounding would dominate it).
+  // apart (relative: closer, V's rounding would dominate it).  The trail: this many onsets whose
+  // forces lie at least kTrailSpacing apart (relative).
   static constexpr int kOnsetSecantSteps = 6;
   static constexpr int kOnsetFarSteps = 10;
-  static constexpr double kOnsetNoiseStep = 1e-12;
   static constexpr double kOnsetSecantReach = 0.2;
-  static constexpr double kOnsetStretchTol = 16.0 * std::numeric_limits<double>::epsilon();
+  static constexpr double kOnsetStretchTol = 1e-12;
+  static constexpr std::size_t kTrailLength = 5;
+  static constexpr double kTrailSpacing = 1e-4;
   static constexpr double kOnsetSlopeSpan = 1e-12;
 
   // The cap marched from pole stretch l to the equator with its largest I1 tracked: a candidate
@@ -1192,6 +1198,10 @@ class SphereTippedContact {
     onsets_[2] = std::move(onsets_[1]);
     onsets_[1] = std::move(onsets_[0]);
     onsets_[0] = ForceOnset{f, std::move(*candidate)};
+    if (onset_trail_.empty() || std::abs(onset_trail_.back().first - f) > kTrailSpacing * f) {
+      onset_trail_.emplace_back(f, onsets_[0]->onset.stretch);
+      if (onset_trail_.size() > kTrailLength) onset_trail_.pop_front();
+    }
     return onsets_[0]->onset;
   }
   // Pole stretch of the onset, for the tests.
@@ -1651,6 +1661,8 @@ class SphereTippedContact {
     EquatorOnset onset;
   };
   mutable std::array<std::optional<ForceOnset>, 3> onsets_;
+  // (force, onset stretch) of the last onsets at distinct forces, the oldest first.
+  mutable std::deque<std::pair<double, double>> onset_trail_;
   // The last cap marched to its contact edge (cap_to_edge): the free start's, which the
   // attachment at the same pole stretch and force reuses.
   mutable std::optional<CapMarch> last_cap_;
