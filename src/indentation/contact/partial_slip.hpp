@@ -64,6 +64,8 @@ class PartialSlip {
       : part_one_(part_one), history_(history), mu_(mu) {}
 
   double mu() const { return mu_; }
+  const FreePart<Law>& part_one() const { return part_one_; }
+  const ProfileStickHistory<Law>& history() const { return history_; }
 
   // The annulus's (dpsi/dR, dlambda1/dR) at (r, psi, lambda1); empty past locking or where s1 no
   // longer grows with lambda1.
