@@ -78,13 +78,15 @@ bool append_partial_slip_fields(const PartialSlip<Law>& slip, const PartialSlipS
   const auto front_psi = history.psi_at(st.front);
   const auto front_l1 = history.stretch_at(st.front);
   if (!front_psi || !front_l1) return false;
-  const StuckTraction held = history.traction_near(st.front);
+  // The front's pressure from its stretches (the normal balance, as the annulus's: p is
+  // continuous there), its frozen tangential traction interpolated between the grid points.
+  const double front_pressure = history.traction_at(st.front, *front_psi, *front_l1, 0.0).pressure;
   on_profile(st.front,
              *front_psi,
              *front_l1,
              q.radius(*front_psi) / st.front,
-             held.pressure,
-             held.tangential);
+             front_pressure,
+             history.traction_near(st.front).tangential);
   // The annulus, from the front (its own side) to the edge: Coulomb slip, tau = mu p.
   for (int i = 0; i <= kPartialSlipAnnulusFieldSamples; ++i) {
     const double r = st.front + (st.edge - st.front) * i / kPartialSlipAnnulusFieldSamples;
