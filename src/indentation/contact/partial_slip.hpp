@@ -127,7 +127,9 @@ class PartialSlip {
     const double f = pull * std::sin(start->slope) + history_.gas_load(psi, q.on_cone(psi));
     const auto run = part_one_.run(f, *start, nullptr, false);
     if (!run.ok) return std::nullopt;
-    return PartialSlipEdge{psi, l1, f, run.residual, run.height + q.height(psi)};
+    // Depths from the inflated pole under a gas pressure (+ 0 without: bit for bit).
+    return PartialSlipEdge{
+        psi, l1, f, run.residual, run.height + q.height(psi) + part_one_.settings().dome_height};
   }
 
   // Part I leaving the profile tangentially at r_c, psi with meridional stretch l1 (t = R s1
