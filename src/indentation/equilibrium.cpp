@@ -8,6 +8,7 @@
 
 #include "indentation/dispatch.hpp"
 #include "indentation/partial_slip_path.hpp"
+#include "indentation/partial_slip_puncture.hpp"
 #include "indentation/physical_state.hpp"
 #include "indentation/puncture_search.hpp"
 #include "indentation/reported_failure.hpp"
@@ -66,11 +67,11 @@ std::optional<ScaledSolution> direct_puncture(const Problem& problem,
 }
 
 // The path's state at a depth between a `coulomb` release and the hand-over to the sliding
-// model (partial_slip_path.hpp), as the loading curve's; empty elsewhere.  The fields along the
-// meridian are not sampled for it.
+// model (partial_slip_path.hpp), as the loading curve's, with its fields when `options` records
+// them; empty elsewhere.
 template <class Shooting>
 std::optional<Equilibrium> partial_slip_at_depth(const Problem& p, const Shooting& shooting,
-                                                 double depth_mm) {
+                                                 double depth_mm, const SolverOptions& options) {
   if (p.stick.rule != StickRule::Coulomb) return std::nullopt;
   const auto switch_point = locate_switch(p, shooting);
   const StageBoundary& b = switch_point.boundary;
@@ -78,35 +79,18 @@ std::optional<Equilibrium> partial_slip_at_depth(const Problem& p, const Shootin
   const auto segment = partial_slip_segment(p, shooting, b);
   if (!segment || !segment->covers(depth_mm) || depth_mm < segment->first_depth_mm)
     return std::nullopt;
-  Equilibrium e;
-  e.stage = Stage::Slip;
-  e.configuration = Configuration::PartialSlip;
-  const auto pt = segment->at_depth(depth_mm);
-  if (!pt) {
+  auto found = segment->detail_at_depth(depth_mm, options.record_fields);
+  if (!found) {
+    Equilibrium e;
+    e.stage = Stage::Slip;
+    e.configuration = Configuration::PartialSlip;
     e.status = Status::NoConvergence;
     e.message = fmt::format("no partial-slip state after the coulomb release reaches depth {} mm",
                             depth_mm);
     return e;
   }
-  e.status = Status::Converged;
-  e.force_n = pt->force_n;
-  e.normalized_force = pt->normalized_force;
-  e.depth_mm = depth_mm;
-  e.part_three_stretch = pt->part_three_stretch;
-  e.contact_edge_radius_mm = pt->contact_edge_radius_mm;
-  e.contact_edge_height_mm = pt->contact_edge_height_mm;
-  e.slip_front_reference_radius_mm = pt->slip_front_reference_radius_mm;
-  e.slip_front_radius_mm = pt->slip_front_radius_mm;
-  e.max_first_invariant = pt->max_first_invariant;
-  e.beyond_puncture = pt->beyond_puncture;
-  e.message = fmt::format(
-      "partial slip after the coulomb release (released at depth {:.6g} mm): held inside the "
-      "slip front at R = {:.6g} mm (r = {:.6g} mm), sliding outside it; the fields along the "
-      "meridian are not sampled",
-      segment->release_depth_mm,
-      e.slip_front_reference_radius_mm,
-      e.slip_front_radius_mm);
-  return e;
+  found->point.depth_mm = depth_mm;  // the family's depth, to its search's 1e-13
+  return partial_slip_equilibrium(p, *segment, std::move(*found));
 }
 
 }  // namespace detail
@@ -150,7 +134,7 @@ Equilibrium solve_at_depth(const Problem& problem, double depth_mm, Stage stage,
   return detail::reporting_failures<Equilibrium>([&] {
     return detail::with_shooting(problem, options, [&](const auto& shooting) {
       if (stage == Stage::Slip)
-        if (auto partial = detail::partial_slip_at_depth(problem, shooting, depth_mm))
+        if (auto partial = detail::partial_slip_at_depth(problem, shooting, depth_mm, options))
           return std::move(*partial);
       return detail::to_physical(
           problem, shooting.contact(), shooting.solve_at_depth(stage, d), stage, options);

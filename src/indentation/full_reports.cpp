@@ -43,8 +43,8 @@ std::string switch_text(const LoadingCurve& c, const Problem& p) {
     return fmt::format(
         "at depth {} mm: force {} N (held) -> {} N (sliding); the curve jumps to full "
         "sliding here, where the held edge needs |tau|/p = mu: the partial slip that joins the "
-        "two branches (docs/model.md, section 15.4) is not solved here (under a gas pressure, or "
-        "where the ends of its family are not found)",
+        "two branches (docs/model.md, section 15.4) is not solved here (a flat face under a gas "
+        "pressure, which slides too, or where the ends of its family are not found)",
         num(c.stick_slip.depth_mm),
         num(c.stick_slip.force_stuck_n),
         num(c.stick_slip.force_sliding_n));

@@ -13,6 +13,7 @@
 #include "indentation/criterion_on_state.hpp"
 #include "indentation/depth_path_puncture.hpp"
 #include "indentation/partial_slip_path.hpp"
+#include "indentation/partial_slip_puncture.hpp"
 #include "indentation/physical_state.hpp"
 #include "indentation/scaled_problem.hpp"
 #include "numerics/shooting.hpp"
@@ -467,19 +468,33 @@ PuncturePrediction find_puncture(const Problem& p, const SolverOptions& options,
     }
   }
   // After a `coulomb` release the path is a partial slip up to its hand-over
-  // (partial_slip_path.hpp): a sliding puncture found within that stretch is not the path's.
-  if (first.ok() && first.stage == Stage::Slip)
-    if (const auto partial = partial_slip_segment(p, shooting, switch_point.boundary);
-        partial && first.depth_mm >= partial->release_depth_mm &&
-        first.depth_mm < partial->handover_depth_mm) {
-      first.status = Status::OutsideModel;
-      first.message = fmt::format(
-          "no puncture found where the model holds: the sliding model reaches the criterion at "
-          "depth {:.6g} mm, within the partial slip after the coulomb release (to {:.6g} mm), "
-          "where the puncture is not searched",
-          first.depth_mm,
-          partial->handover_depth_mm);
-    }
+  // (partial_slip_path.hpp): a critical I1 is searched along its family, and a sliding puncture
+  // found within that stretch is not the path's.
+  if (first.ok() && first.stage == Stage::Stick) return first;
+  const auto partial = partial_slip_segment(p, shooting, switch_point.boundary);
+  if (!partial) return first;
+  std::optional<PuncturePrediction> in_partial;
+  for (const auto& c : criteria)
+    if (auto found = partial_slip_puncture(p, *partial, c, options.record_fields);
+        found && (!in_partial || found->depth_mm < in_partial->depth_mm))
+      in_partial = std::move(found);
+  if (in_partial) {
+    at_switch = false;
+    if (criteria.size() > 1 || !std::holds_alternative<CriticalFirstInvariant>(criteria[0]))
+      in_partial->message =
+          "the criteria other than the critical I1 are not searched within the partial slip";
+    return std::move(*in_partial);
+  }
+  if (first.ok() && first.depth_mm >= partial->release_depth_mm &&
+      first.depth_mm < partial->handover_depth_mm) {
+    first.status = Status::OutsideModel;
+    first.message = fmt::format(
+        "no puncture found where the model holds: the sliding model reaches the criterion at "
+        "depth {:.6g} mm, within the partial slip after the coulomb release (to {:.6g} mm), "
+        "where only a critical I1 is searched (the partial slip's stays below it)",
+        first.depth_mm,
+        partial->handover_depth_mm);
+  }
   return first;
 }
 

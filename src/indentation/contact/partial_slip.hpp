@@ -64,6 +64,8 @@ class PartialSlip {
       : part_one_(part_one), history_(history), mu_(mu) {}
 
   double mu() const { return mu_; }
+  const FreePart<Law>& part_one() const { return part_one_; }
+  const ProfileStickHistory<Law>& history() const { return history_; }
 
   // The annulus's (dpsi/dR, dlambda1/dR) at (r, psi, lambda1); empty past locking or where s1 no
   // longer grows with lambda1.
@@ -125,7 +127,9 @@ class PartialSlip {
     const double f = pull * std::sin(start->slope) + history_.gas_load(psi, q.on_cone(psi));
     const auto run = part_one_.run(f, *start, nullptr, false);
     if (!run.ok) return std::nullopt;
-    return PartialSlipEdge{psi, l1, f, run.residual, run.height + q.height(psi)};
+    // Depths from the inflated pole under a gas pressure (+ 0 without: bit for bit).
+    return PartialSlipEdge{
+        psi, l1, f, run.residual, run.height + q.height(psi) + part_one_.settings().dome_height};
   }
 
   // Part I leaving the profile tangentially at r_c, psi with meridional stretch l1 (t = R s1
