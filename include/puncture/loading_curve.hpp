@@ -81,6 +81,13 @@ struct PuncturePrediction : Outcome {
   // empty).  Empty for a membrane mounted stress-free, without a puncture found, or if the
   // curve could not be followed.
   std::optional<FailureVerdict> failure_verdict;
+  // Where a later inflated state's path folds before any puncture (docs/model.md §8.1): the
+  // puncture is the one under depth control, as the loading curve's, and this is the
+  // snap-through on the way (a SnapThrough event: its depth, the force before (force_n) and
+  // after (force_after_n), where the probe touches the landed state again); the puncture lies on
+  // the first inflated state the membrane lands on, its depth measured from the later state's
+  // pole.  Empty otherwise.
+  std::optional<CurveEvent> snap_through;
   Equilibrium state;  // the full state at puncture
 };
 

@@ -29,6 +29,22 @@ std::optional<FoldBranch> fold_of_depth_path(const Shooting& shooting) {
   return follow_through_fold(shooting, path.state, *path.deepest);
 }
 
+// The SnapThrough event at the fold of `branch`, its landing not yet set (snap_landing).
+template <class Shooting>
+CurveEvent snap_event_at_fold(const Problem& p, const Shooting& shooting,
+                              const FoldBranch& branch) {
+  const SolverScales units = solver_scales(p);
+  const double fold_mm = branch.fold.state.depth * units.length_mm;
+  CurveEvent e;
+  e.kind = CurveEventKind::SnapThrough;
+  e.depth_mm = fold_mm;
+  e.force_n = branch.fold.state.f * units.force_n;
+  e.contact_reach_mm = contact_reach_mm(
+      curve_point_of(p, shooting.contact(), branch.fold.state, Stage::Slip, fold_mm));
+  e.depth_uncertainty_mm = branch.fold.depth_uncertainty * units.length_mm;
+  return e;
+}
+
 // The curve to the fold and the branch beyond, and the SnapThrough event at the fold, its
 // landing not yet set (snap_landing); empty (and `out` untouched) where the path has no fold
 // or the grid cannot be followed to it.  To puncture (no max_depth_mm) the `points` are evenly
@@ -90,13 +106,7 @@ std::optional<CurveEvent> curve_to_fold(const Problem& p, const Shooting& shooti
   for (std::size_t i = branch->fold_index; i < branch->states.size(); ++i)
     out.beyond_fold.push_back(curve_point_of(
         p, contact, branch->states[i], Stage::Slip, branch->states[i].depth * units.length_mm));
-  CurveEvent e;
-  e.kind = CurveEventKind::SnapThrough;
-  e.depth_mm = fold_mm;
-  e.force_n = branch->fold.state.f * units.force_n;
-  e.contact_reach_mm = contact_reach_mm(out.points.back());
-  e.depth_uncertainty_mm = branch->fold.depth_uncertainty * units.length_mm;
-  return e;
+  return snap_event_at_fold(p, shooting, *branch);
 }
 
 }  // namespace puncture::detail

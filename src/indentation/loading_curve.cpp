@@ -121,6 +121,33 @@ PuncturePrediction puncture_on_path(const Problem& p, const SolverOptions& optio
   });
 }
 
+// A later inflated state whose path folds before any puncture (the puncture search's
+// limit_load there): the puncture under depth control, as the loading curve's, the first
+// state's after the snap-through (snap_landing.hpp); empty where the path has no fold.
+std::optional<PuncturePrediction> puncture_past_fold(const Problem& p,
+                                                     const SolverOptions& options) {
+  std::optional<CurveEvent> snap;
+  with_shooting(p, without_fields(options), [&](const auto& shooting) {
+    if (const auto branch = fold_of_depth_path(shooting))
+      snap = snap_event_at_fold(p, shooting, *branch);
+  });
+  if (!snap) return std::nullopt;
+  const SnapLanding landing = snap_landing(p, options, *snap);
+  PuncturePrediction out;
+  if (!landing.ok()) {
+    out.status = landing.status;
+    out.message = landing.message;
+    return out;
+  }
+  Problem first = p;
+  first.preload.inflated_state = 1;
+  SolverOptions alone = options;
+  alone.failure_verdict = false;  // the later state's verdict is its own curve's
+  out = predict_puncture(first, alone);
+  puncture_past_snap(landing, *snap, out);
+  return out;
+}
+
 }  // namespace detail
 
 namespace {
@@ -157,6 +184,11 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
           : with_face_slip_checked(p, detail::reporting_failures<PuncturePrediction>([&] {
                                      return detail::sealed_puncture(p, options);
                                    }));
+  if (out.status == Status::LimitLoad && !p.preload.gas_volume_mm3 && p.preload.inflated_state != 1)
+    out = detail::reporting_failures<PuncturePrediction>([&] {
+      auto past = detail::puncture_past_fold(p, options);
+      return past ? std::move(*past) : out;
+    });
   add_failure_verdict(p, options, out);
   return out;
 }
