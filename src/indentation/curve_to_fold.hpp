@@ -14,6 +14,7 @@
 #include "indentation/curve_following.hpp"
 #include "indentation/depth_arclength.hpp"
 #include "indentation/depth_path_puncture.hpp"
+#include "indentation/work_to_fold.hpp"
 
 namespace puncture::detail {
 
@@ -51,11 +52,13 @@ CurveEvent snap_event_at_fold(const Problem& p, const Shooting& shooting,
 // spaced to the fold, the fold the last; to max_depth_mm beyond the fold, the even grid's depths
 // short of the fold, then the fold, and the grid's deeper depths are put in `after` (the
 // landing's, snap_landing).  Not for given depths.  For a later inflated state whose puncture
-// search ended at a fold.
+// search ended at a fold.  With SolverOptions::energy_to_puncture, `fold_work` gets the work to
+// the fold [mJ] (work_to_fold_mj).
 template <class Shooting>
 std::optional<CurveEvent> curve_to_fold(const Problem& p, const Shooting& shooting,
                                         const CurveOptions& curve, const SolverOptions& options,
-                                        LoadingCurve& out, std::vector<double>& after) {
+                                        LoadingCurve& out, std::vector<double>& after,
+                                        std::optional<double>& fold_work) {
   if (!curve.depths_mm.empty() || curve.points < 3) return std::nullopt;
   const auto branch = fold_of_depth_path(shooting);
   if (!branch) return std::nullopt;
@@ -106,6 +109,9 @@ std::optional<CurveEvent> curve_to_fold(const Problem& p, const Shooting& shooti
   for (std::size_t i = branch->fold_index; i < branch->states.size(); ++i)
     out.beyond_fold.push_back(curve_point_of(
         p, contact, branch->states[i], Stage::Slip, branch->states[i].depth * units.length_mm));
+  fold_work.reset();
+  if (options.energy_to_puncture)
+    fold_work = work_to_fold_mj(p, shooting, options.curve_tol, *branch);
   return snap_event_at_fold(p, shooting, *branch);
 }
 

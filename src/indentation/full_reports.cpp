@@ -326,7 +326,10 @@ std::string full_report(const PuncturePrediction& p) {
   if (p.energy_to_puncture_mj)
     line(out,
          "energy to puncture",
-         num(*p.energy_to_puncture_mj) + " mJ (the area under the force-depth curve)");
+         num(*p.energy_to_puncture_mj) +
+             (p.snap_through ? " mJ (the area under the force-depth curve depth control "
+                               "follows: the drop at the snap-through adds nothing)"
+                             : " mJ (the area under the force-depth curve)"));
   else if (!p.message.empty())
     line(out, "note", p.message);
   line(out, "stage", to_string(p.stage));

@@ -127,9 +127,13 @@ PuncturePrediction puncture_on_path(const Problem& p, const SolverOptions& optio
 std::optional<PuncturePrediction> puncture_past_fold(const Problem& p,
                                                      const SolverOptions& options) {
   std::optional<CurveEvent> snap;
+  std::optional<double> fold_work;  // the work to the fold [mJ], when asked
   with_shooting(p, without_fields(options), [&](const auto& shooting) {
-    if (const auto branch = fold_of_depth_path(shooting))
-      snap = snap_event_at_fold(p, shooting, *branch);
+    const auto branch = fold_of_depth_path(shooting);
+    if (!branch) return;
+    snap = snap_event_at_fold(p, shooting, *branch);
+    if (options.energy_to_puncture)
+      fold_work = work_to_fold_mj(p, shooting, options.curve_tol, *branch);
   });
   if (!snap) return std::nullopt;
   const SnapLanding landing = snap_landing(p, options, *snap);
@@ -144,7 +148,7 @@ std::optional<PuncturePrediction> puncture_past_fold(const Problem& p,
   SolverOptions alone = options;
   alone.failure_verdict = false;  // the later state's verdict is its own curve's
   out = predict_puncture(first, alone);
-  puncture_past_snap(landing, *snap, out);
+  puncture_past_snap(landing, *snap, fold_work, out);
   return out;
 }
 
@@ -220,13 +224,14 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
   return detail::reporting_failures<LoadingCurve>([&] {
     // Where a later inflated state's path turns back before the puncture: the snap-through.
     std::optional<CurveEvent> snap;
-    std::vector<double> after_snap;  // the curve's depths past it (to max_depth_mm)
+    std::vector<double> after_snap;   // the curve's depths past it (to max_depth_mm)
+    std::optional<double> fold_work;  // the work to the fold [mJ], when asked
     auto out = detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       auto followed = detail::curve_to_puncture(p, shooting, curve, options);
       if (!followed.ok() && followed.puncture.status == Status::LimitLoad) {
         LoadingCurve to_fold;
         to_fold.puncture = followed.puncture;
-        snap = detail::curve_to_fold(p, shooting, curve, options, to_fold, after_snap);
+        snap = detail::curve_to_fold(p, shooting, curve, options, to_fold, after_snap, fold_work);
         if (snap) {
           to_fold.status = Status::Converged;
           return to_fold;
@@ -239,7 +244,7 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
     add_events(p, curve, options, out);
     if (snap) {
       out.events.push_back(*snap);
-      detail::land_after_snap(p, curve, options, after_snap, out);
+      detail::land_after_snap(p, curve, options, after_snap, fold_work, out);
     }
     return out;
   });

@@ -89,7 +89,7 @@ SnapLanding snap_landing(const Problem& p, const SolverOptions& options, CurveEv
 }
 
 void puncture_past_snap(const SnapLanding& landing, const CurveEvent& snap,
-                        PuncturePrediction& first) {
+                        const std::optional<double>& fold_work, PuncturePrediction& first) {
   if (!first.ok()) {
     first.message = fmt::format(
         "under depth control the membrane snaps through at {} mm onto the first inflated state, "
@@ -101,20 +101,36 @@ void puncture_past_snap(const SnapLanding& landing, const CurveEvent& snap,
   first.depth_mm += landing.offset_mm;
   first.state.depth_mm += landing.offset_mm;
   first.snap_through = snap;
-  // The work along the later state's branch to the fold is not added to the first state's.
-  first.energy_to_puncture_mj.reset();
+  std::string energy;
+  if (first.energy_to_puncture_mj) {
+    if (fold_work && landing.landing_depth_mm <= 0.0) {
+      energy = fmt::format(
+          "; the energy to puncture is the work to the fold, {} mJ, plus the first state's from "
+          "the probe's next touch (the force is 0 in between; the drop at the snap-through is "
+          "dissipated, not the probe's work)",
+          landing_num(*fold_work));
+      *first.energy_to_puncture_mj += *fold_work;
+    } else {
+      energy = fold_work ? "; the energy to puncture is not integrated across a snap-through "
+                           "onto an indented state"
+                         : "; no energy to puncture: the path to the fold is not followed at "
+                           "the quadrature's depths";
+      first.energy_to_puncture_mj.reset();
+    }
+  }
   first.message = fmt::format(
       "under depth control, on the first inflated state after the snap-through at {} mm (depths "
-      "from the later state's pole; the first state's pole {} mm lower); the energy to puncture "
-      "is not integrated across the snap-through{}{}",
+      "from the later state's pole; the first state's pole {} mm lower){}{}{}",
       landing_num(snap.depth_mm),
       landing_num(landing.offset_mm),
+      energy,
       first.message.empty() ? "" : "; ",
       first.message);
 }
 
 void land_after_snap(const Problem& p, const CurveOptions& curve, const SolverOptions& options,
-                     const std::vector<double>& after, LoadingCurve& out) {
+                     const std::vector<double>& after, const std::optional<double>& fold_work,
+                     LoadingCurve& out) {
   const std::size_t at = out.events.size() - 1;  // the SnapThrough
   const SnapLanding landing = snap_landing(p, options, out.events[at]);
   if (!landing.ok()) {
@@ -172,7 +188,7 @@ void land_after_snap(const Problem& p, const CurveOptions& curve, const SolverOp
     alone.failure_verdict = false;
     out.puncture = predict_puncture(first, alone);
   }
-  puncture_past_snap(landing, out.events[at], out.puncture);
+  puncture_past_snap(landing, out.events[at], fold_work, out.puncture);
   out.failure_verdict = failure_verdict(p, out);
 }
 

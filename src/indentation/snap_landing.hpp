@@ -27,10 +27,14 @@ struct SnapLanding : Outcome {
 SnapLanding snap_landing(const Problem& p, const SolverOptions& options, CurveEvent& snap);
 
 // The first state's puncture `first` as the later state's after the snap-through (`landing`,
-// `snap`): its depth shifted by the poles' offset, the snap-through recorded.  The energy to
-// puncture is not integrated across the snap-through: left empty, with a note.
+// `snap`): its depth shifted by the poles' offset, the snap-through recorded.  Its energy to
+// puncture (from the first state's dome) becomes the area under the path depth control follows:
+// `fold_work` (the work to the fold [mJ], work_to_fold_mj), then nothing while the probe is clear
+// of the landed membrane (force 0), then the first state's (the force's drop at the
+// snap-through is dissipated, not the probe's work).  Where the membrane lands indented, or
+// `fold_work` is missing, left empty with a note.
 void puncture_past_snap(const SnapLanding& landing, const CurveEvent& snap,
-                        PuncturePrediction& first);
+                        const std::optional<double>& fold_work, PuncturePrediction& first);
 
 // `out`: the curve to the fold, its last event the SnapThrough there.  The landing state is the
 // first inflated state at the same probe position (snap_landing).  The event gets the landing's
@@ -39,7 +43,9 @@ void puncture_past_snap(const SnapLanding& landing, const CurveEvent& snap,
 // gives it).  Where that curve fails, `out` ends at the landing with its status and why.
 // `after`: the curve's depths past the fold (to max_depth_mm; curve_to_fold), empty for the curve
 // to puncture: the points at those depths then, clear of the probe at force 0.
+// `fold_work`: as puncture_past_snap's.
 void land_after_snap(const Problem& p, const CurveOptions& curve, const SolverOptions& options,
-                     const std::vector<double>& after, LoadingCurve& out);
+                     const std::vector<double>& after, const std::optional<double>& fold_work,
+                     LoadingCurve& out);
 
 }  // namespace puncture::detail

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
 
 #include "pressurised_support.hpp"
 #include "puncture/inflation.hpp"
@@ -63,6 +66,70 @@ TEST(SnapPuncture, ThePunctureSolveIsTheCurvesUnderDepthControl) {
   EXPECT_FALSE(on_first.snap_through.has_value());
   record("snap_puncture_force_n", alone.force_n);
   record("snap_puncture_depth_mm", alone.depth_mm);
+}
+
+// The trapezoid rule on points[lo..hi] (hi - lo even, evenly spaced) and on every other one:
+// {T_h, T_2h}.
+std::array<double, 2> snap_trapezoids(const std::vector<CurvePoint>& q, std::size_t lo,
+                                      std::size_t hi) {
+  std::array<double, 2> t{0.0, 0.0};
+  for (std::size_t i = lo; i < hi; ++i)
+    t[0] += 0.5 * (q[i + 1].depth_mm - q[i].depth_mm) * (q[i].force_n + q[i + 1].force_n);
+  for (std::size_t i = lo; i + 2 <= hi; i += 2)
+    t[1] += 0.5 * (q[i + 2].depth_mm - q[i].depth_mm) * (q[i].force_n + q[i + 2].force_n);
+  return t;
+}
+
+// The energy to puncture across the snap-through: the area under the path depth control
+// follows, the work to the fold, nothing while the probe is clear of the landed membrane (the
+// force's drop is dissipated), then the first state's from its touch.  Checked against the
+// trapezoid rule on the curve's 201 evenly spaced points to the fold and on the first state's 201
+// to its puncture, each with the error bound |T_h - T_2h| (the error of T_h is (T_h - T_2h) / 3
+// for a smooth force, 0.55 of it for the square-root end at the fold, F ~ sqrt(fold - depth));
+// and the work to the fold alone (the difference from the first state's own energy to puncture,
+// its own quadrature from its dome) against the first piece.
+TEST(SnapPuncture, TheEnergyToPunctureIsTheAreaUnderThePathDepthControlFollows) {
+  const Problem p = snap_middle_state();
+  SolverOptions o;
+  o.energy_to_puncture = true;
+  const PuncturePrediction alone = predict_puncture(p, o);
+  ASSERT_TRUE(alone.ok()) << alone.message;
+  ASSERT_TRUE(alone.energy_to_puncture_mj.has_value()) << alone.message;
+  Problem first = p;
+  first.preload.inflated_state = 1;
+  const PuncturePrediction on_first = predict_puncture(first, o);
+  ASSERT_TRUE(on_first.energy_to_puncture_mj.has_value()) << on_first.message;
+
+  CurveOptions c;
+  c.points = 201;
+  c.locate_events = false;
+  const LoadingCurve curve = loading_curve(p, c, o);
+  ASSERT_TRUE(curve.ok()) << curve.message;
+  ASSERT_TRUE(curve.puncture.energy_to_puncture_mj.has_value()) << curve.puncture.message;
+  const double energy = *alone.energy_to_puncture_mj;
+  EXPECT_NEAR(*curve.puncture.energy_to_puncture_mj, energy, 1e-9 * energy);
+
+  // The points: 0..200 to the fold (the last), the landing at the fold's depth (force 0), then
+  // the first state's 201 from its touch (force 0) to its puncture.
+  const auto& q = curve.points;
+  ASSERT_EQ(q.size(), 403u);
+  ASSERT_TRUE(curve.puncture.snap_through.has_value());
+  EXPECT_EQ(q[200].depth_mm, curve.puncture.snap_through->depth_mm);
+  EXPECT_EQ(q[201].force_n, 0.0);
+  EXPECT_EQ(q[202].force_n, 0.0);
+  const auto to_fold = snap_trapezoids(q, 0, 200), landed = snap_trapezoids(q, 202, 402);
+  const double bound_to_fold = std::abs(to_fold[0] - to_fold[1]);
+  const double bound_landed = std::abs(landed[0] - landed[1]);
+  EXPECT_NEAR(energy, to_fold[0] + landed[0], bound_to_fold + bound_landed);
+  const double work_to_fold = energy - *on_first.energy_to_puncture_mj;
+  EXPECT_NEAR(work_to_fold, to_fold[0], bound_to_fold);
+  EXPECT_GT(work_to_fold, 10.0 * bound_to_fold);  // the check sees the piece
+  record("snap_energy_to_puncture_mj", energy);
+  record("snap_work_to_fold_mj", work_to_fold);
+  record("snap_work_to_fold_trapezoid_mj", to_fold[0]);
+  record("snap_work_to_fold_bound_mj", bound_to_fold);
+  record("snap_landed_trapezoid_mj", landed[0]);
+  record("snap_landed_bound_mj", bound_landed);
 }
 
 }  // namespace
