@@ -96,6 +96,8 @@ struct CurveOptions {
   double max_depth_mm = 0.0;  // stop here instead of at puncture when > 0
   // When not empty: the curve at exactly these depths [mm] (finite, > 0, strictly increasing)
   // instead of the even grid (points and max_depth_mm are then ignored); a measured record's.
+  // Besides them, as on the even grid, two points at a stick -> slip switch's depth and, where
+  // depth control snaps through at a fold, the fold and the landing at the fold's depth.
   std::vector<double> depths_mm;
   std::function<void(int done, int total)> progress;  // called after each point, if set
   // Find the curve's events and locate each by solves at depths (LoadingCurve::events; tens of

@@ -132,5 +132,93 @@ TEST(SnapPuncture, TheEnergyToPunctureIsTheAreaUnderThePathDepthControlFollows) 
   record("snap_landed_bound_mj", bound_landed);
 }
 
+// A curve at given depths (a fit's) goes through the fold as the even one does: the given depths
+// short of the fold, the fold and the landing at its depth, then the given depths beyond, at
+// force 0 while the probe is clear of the first state and that state's own beyond.  Its states
+// match the even curves' at common depths (to 1e-8 of the force: each point converges to
+// curve_tol = 1e-9 from its own predictor), and at a depth of neither the first state's own
+// state solved alone at the shifted depth.
+TEST(SnapPuncture, ACurveAtGivenDepthsGoesThroughTheFoldAsTheEvenOne) {
+  const Problem p = snap_middle_state();
+  CurveOptions to_puncture;
+  to_puncture.points = 21;
+  to_puncture.locate_events = false;
+  const LoadingCurve full = loading_curve(p, to_puncture);
+  ASSERT_TRUE(full.ok()) << full.message;
+  CurveOptions to_depth = to_puncture;
+  to_depth.points = 11;
+  to_depth.max_depth_mm = 50.0;
+  const LoadingCurve even = loading_curve(p, to_depth);
+  ASSERT_TRUE(even.ok()) << even.message;
+  CurveOptions given;
+  given.locate_events = false;
+  given.depths_mm = {full.points[5].depth_mm,
+                     full.points[10].depth_mm,
+                     5.0,
+                     10.0,
+                     15.0,
+                     20.0,
+                     22.5,
+                     25.0,
+                     30.0,
+                     35.0,
+                     40.0,
+                     45.0,
+                     50.0};
+  const LoadingCurve at = loading_curve(p, given);
+  ASSERT_TRUE(at.ok()) << at.message;
+  ASSERT_EQ(at.points.size(), given.depths_mm.size() + 2);
+  ASSERT_FALSE(at.events.empty());
+  const CurveEvent& snap = at.events.front();
+  EXPECT_EQ(snap.kind, CurveEventKind::SnapThrough);
+  EXPECT_EQ(snap.depth_mm, full.events.front().depth_mm);
+  EXPECT_FALSE(at.beyond_fold.empty());
+  // The fold, then the landing (the probe clear of the first state: force 0), at its depth.
+  EXPECT_EQ(at.points[2].depth_mm, snap.depth_mm);
+  EXPECT_EQ(at.points[2].force_n, snap.force_n);
+  EXPECT_EQ(at.points[3].depth_mm, snap.depth_mm);
+  EXPECT_EQ(at.points[3].force_n, 0.0);
+  // Short of the fold: the curve to puncture's states.
+  for (const std::size_t i : {0u, 1u}) {
+    const CurvePoint& a = at.points[i];
+    const CurvePoint& b = full.points[i == 0 ? 5 : 10];
+    EXPECT_EQ(a.depth_mm, b.depth_mm);
+    EXPECT_NEAR(a.force_n, b.force_n, 1e-8 * b.force_n) << a.depth_mm;
+    EXPECT_EQ(a.configuration, b.configuration);
+  }
+  // Beyond: the even curve's at 5, 10, ..., 50 mm.
+  Problem first = p;
+  first.preload.inflated_state = 1;
+  const double offset_mm = *snap.end_depth_mm;
+  int common = 0;
+  for (std::size_t i = 4; i < at.points.size(); ++i) {
+    const CurvePoint& a = at.points[i];
+    EXPECT_EQ(a.depth_mm, given.depths_mm[i - 2]);
+    const auto b = std::find_if(even.points.begin() + 2, even.points.end(), [&](const auto& q) {
+      return std::abs(q.depth_mm - a.depth_mm) < 1e-12 * a.depth_mm;
+    });
+    if (b == even.points.end()) {  // 22.5 mm: the first state's own state there
+      const Equilibrium alone = solve_at_depth(first, a.depth_mm - offset_mm, Stage::Slip);
+      ASSERT_TRUE(alone.ok()) << alone.message;
+      EXPECT_NEAR(a.force_n, alone.force_n, 1e-8 * alone.force_n);
+      continue;
+    }
+    ++common;
+    if (a.depth_mm <= offset_mm) {
+      EXPECT_EQ(a.force_n, 0.0) << a.depth_mm;
+      EXPECT_EQ(b->force_n, 0.0) << a.depth_mm;
+      continue;
+    }
+    EXPECT_NEAR(a.force_n, b->force_n, 1e-8 * b->force_n) << a.depth_mm;
+    EXPECT_NEAR(a.max_first_invariant, b->max_first_invariant, 1e-8 * b->max_first_invariant);
+    EXPECT_EQ(a.configuration, b->configuration) << a.depth_mm;
+  }
+  EXPECT_EQ(common, 10);
+  // The same puncture, the first state's under depth control.
+  ASSERT_TRUE(at.puncture.ok()) << at.puncture.message;
+  EXPECT_NEAR(at.puncture.force_n, full.puncture.force_n, 1e-9 * full.puncture.force_n);
+  EXPECT_NEAR(at.puncture.depth_mm, full.puncture.depth_mm, 1e-9 * full.puncture.depth_mm);
+}
+
 }  // namespace
 }  // namespace puncture::test
