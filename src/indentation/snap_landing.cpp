@@ -7,7 +7,7 @@
 #include <string>
 
 #include "indentation/curve_events.hpp"
-#include "indentation/curve_point_of.hpp"
+#include "indentation/curve_point_from_equilibrium.hpp"
 #include "indentation/inflated_dome.hpp"
 #include "indentation/solver_scales.hpp"
 #include "puncture/equilibrium.hpp"
@@ -52,7 +52,7 @@ SnapLanding snap_landing(const Problem& p, const SolverOptions& options, CurveEv
           e.message);
       return out;
     }
-    out.point = curve_point_of(e, fold_mm);
+    out.point = curve_point_from_equilibrium(e, fold_mm);
   }
   const bool clear = out.landing_depth_mm <= 0.0;
   snap.force_after_n = clear ? 0.0 : out.point.force_n;
@@ -81,7 +81,7 @@ SnapLanding snap_landing(const Problem& p, const SolverOptions& options, CurveEv
           "{}; the first inflated state's dome: {}", snap.description, free_dome.message);
       return out;
     }
-    out.point = curve_point_of(free_dome, fold_mm);  // clear of the probe
+    out.point = curve_point_from_equilibrium(free_dome, fold_mm);  // clear of the probe
   }
   out.point.depth_mm = fold_mm;
   out.status = Status::Converged;
