@@ -10,6 +10,7 @@
 #include "indentation/curve_events.hpp"
 #include "indentation/curve_following.hpp"
 #include "indentation/curve_to_fold.hpp"
+#include "indentation/depth_solve.hpp"
 #include "indentation/dispatch.hpp"
 #include "indentation/face_slip.hpp"
 #include "indentation/path_puncture.hpp"
@@ -73,14 +74,16 @@ std::optional<double> face_outward_from(const Problem& p, const std::vector<Curv
 void add_events(const Problem& p, const CurveOptions& curve, const SolverOptions& options,
                 LoadingCurve& out) {
   if (!out.ok() || !curve.locate_events) return;
-  const SolverOptions quiet = without_fields(options);
-  const detail::DepthSampler at_depth = [&](double depth_mm,
-                                            Stage stage) -> std::optional<detail::DepthSample> {
-    const Equilibrium e = solve_at_depth(p, depth_mm, stage, quiet);
-    if (!e.ok()) return std::nullopt;
-    return detail::DepthSample{e.force_n, e.contact_edge_radius_mm + e.contact_edge_height_mm};
-  };
-  out.events = detail::located_curve_events(out.points, at_depth);
+  // (Under the coulomb rule the partial-slip family is built once for all the samples.)
+  detail::with_depth_solve(p, without_fields(options), [&](const detail::DepthSolve& solve) {
+    const detail::DepthSampler at_depth = [&](double depth_mm,
+                                              Stage stage) -> std::optional<detail::DepthSample> {
+      const Equilibrium e = solve(depth_mm, stage);
+      if (!e.ok()) return std::nullopt;
+      return detail::DepthSample{e.force_n, e.contact_edge_radius_mm + e.contact_edge_height_mm};
+    };
+    out.events = detail::located_curve_events(out.points, at_depth);
+  });
   out.failure_verdict = detail::failure_verdict(p, out);
 }
 
