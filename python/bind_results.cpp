@@ -306,6 +306,12 @@ void bind_results(py::module_& m) {
                     &PuncturePrediction::failure_verdict,
                     "a pre-tensioned membrane: which failure comes first (FailureVerdict; asked "
                     "by SolverOptions.failure_verdict), else None")
+      .def_readonly("snap_through",
+                    &PuncturePrediction::snap_through,
+                    "where a later inflated state's path folds before any puncture: the "
+                    "snap-through under depth control on the way (a CurveEvent: depth_mm, "
+                    "force_n before, force_after_n after); the puncture is on the first "
+                    "inflated state it lands on.  Else None")
       .def_property_readonly(
           "state",
           [](py::object self) { return member_with_problem(self, &PuncturePrediction::state); },

@@ -35,6 +35,19 @@ json puncture_json(const PuncturePrediction& p, const Problem& problem) {
   if (!problem.criteria.empty()) out["criterion"] = p.criterion;
   // Written only when there is one (a pre-tensioned membrane).
   if (p.failure_verdict) out["failure_verdict"] = failure_verdict_json(*p.failure_verdict);
+  // Written only when the path snaps through at a fold of the depth on the way (docs/model.md
+  // §8.1): the puncture is depth control's.
+  if (const auto& snap = p.snap_through)
+    out["snap_through"] = {
+        {"control", "depth"},
+        {"depth_mm", finite(snap->depth_mm, "snap-through depth")},
+        {"force_before_n", finite(snap->force_n, "force before the snap-through")},
+        {"force_after_n",
+         finite(snap->force_after_n.value_or(0.0), "force after the snap-through")},
+        {"touches_again_at_mm",
+         snap->end_depth_mm ? json(finite(*snap->end_depth_mm, "depth of the next touch"))
+                            : json(nullptr)},
+        {"description", snap->description}};
   return out;
 }
 

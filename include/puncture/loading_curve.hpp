@@ -81,6 +81,13 @@ struct PuncturePrediction : Outcome {
   // empty).  Empty for a membrane mounted stress-free, without a puncture found, or if the
   // curve could not be followed.
   std::optional<FailureVerdict> failure_verdict;
+  // Where a later inflated state's path folds before any puncture (docs/model.md §8.1): the
+  // puncture is the one under depth control, as the loading curve's, and this is the
+  // snap-through on the way (a SnapThrough event: its depth, the force before (force_n) and
+  // after (force_after_n), where the probe touches the landed state again); the puncture lies on
+  // the first inflated state the membrane lands on, its depth measured from the later state's
+  // pole.  Empty otherwise.
+  std::optional<CurveEvent> snap_through;
   Equilibrium state;  // the full state at puncture
 };
 
@@ -89,6 +96,8 @@ struct CurveOptions {
   double max_depth_mm = 0.0;  // stop here instead of at puncture when > 0
   // When not empty: the curve at exactly these depths [mm] (finite, > 0, strictly increasing)
   // instead of the even grid (points and max_depth_mm are then ignored); a measured record's.
+  // Besides them, as on the even grid, two points at a stick -> slip switch's depth and, where
+  // depth control snaps through at a fold, the fold and the landing at the fold's depth.
   std::vector<double> depths_mm;
   std::function<void(int done, int total)> progress;  // called after each point, if set
   // Find the curve's events and locate each by solves at depths (LoadingCurve::events; tens of

@@ -516,6 +516,14 @@ def test_middle_inflated_state_snaps_through_at_its_fold(cli):
     assert rel(event["depth_mm"], snap.depth_mm) < 1e-12
     assert len(from_cli["curve"]["beyond_fold"]) == len(curve.beyond_fold)
     assert rel(curve.puncture.force_n, from_cli["puncture"]["force_n"]) < 1e-12
+    # predict_puncture goes through the fold too, under depth control: the curve's puncture.
+    prediction = pu.predict_puncture(problem)
+    assert prediction.ok
+    assert rel(prediction.force_n, curve.puncture.force_n) < 1e-9
+    assert rel(prediction.depth_mm, curve.puncture.depth_mm) < 1e-9
+    assert prediction.snap_through.depth_mm == snap.depth_mm
+    assert prediction.snap_through.force_after_n == 0.0
+    assert curve.puncture.snap_through.depth_mm == snap.depth_mm
 
 
 def test_puncture_failure_verdict_is_the_curves_and_the_clis(cli):

@@ -14,6 +14,7 @@
 #include "indentation/curve_following.hpp"
 #include "indentation/depth_arclength.hpp"
 #include "indentation/depth_path_puncture.hpp"
+#include "indentation/work_to_fold.hpp"
 
 namespace puncture::detail {
 
@@ -29,18 +30,37 @@ std::optional<FoldBranch> fold_of_depth_path(const Shooting& shooting) {
   return follow_through_fold(shooting, path.state, *path.deepest);
 }
 
+// The SnapThrough event at the fold of `branch`, its landing not yet set (snap_landing).
+template <class Shooting>
+CurveEvent snap_event_at_fold(const Problem& p, const Shooting& shooting,
+                              const FoldBranch& branch) {
+  const SolverScales units = solver_scales(p);
+  const double fold_mm = branch.fold.state.depth * units.length_mm;
+  CurveEvent e;
+  e.kind = CurveEventKind::SnapThrough;
+  e.depth_mm = fold_mm;
+  e.force_n = branch.fold.state.f * units.force_n;
+  e.contact_reach_mm = contact_reach_mm(
+      curve_point_of(p, shooting.contact(), branch.fold.state, Stage::Slip, fold_mm));
+  e.depth_uncertainty_mm = branch.fold.depth_uncertainty * units.length_mm;
+  return e;
+}
+
 // The curve to the fold and the branch beyond, and the SnapThrough event at the fold, its
 // landing not yet set (snap_landing); empty (and `out` untouched) where the path has no fold
 // or the grid cannot be followed to it.  To puncture (no max_depth_mm) the `points` are evenly
 // spaced to the fold, the fold the last; to max_depth_mm beyond the fold, the even grid's depths
 // short of the fold, then the fold, and the grid's deeper depths are put in `after` (the
-// landing's, snap_landing).  Not for given depths.  For a later inflated state whose puncture
-// search ended at a fold.
+// landing's, snap_landing); given depths likewise (one at the fold's depth among `after`).  For a
+// later inflated state whose puncture search ended at a fold.  With
+// SolverOptions::energy_to_puncture, `fold_work` gets the work to the fold [mJ] (work_to_fold_mj).
 template <class Shooting>
 std::optional<CurveEvent> curve_to_fold(const Problem& p, const Shooting& shooting,
                                         const CurveOptions& curve, const SolverOptions& options,
-                                        LoadingCurve& out, std::vector<double>& after) {
-  if (!curve.depths_mm.empty() || curve.points < 3) return std::nullopt;
+                                        LoadingCurve& out, std::vector<double>& after,
+                                        std::optional<double>& fold_work) {
+  const bool given = !curve.depths_mm.empty();
+  if (!given && curve.points < 3) return std::nullopt;
   const auto branch = fold_of_depth_path(shooting);
   if (!branch) return std::nullopt;
   const SolverScales units = solver_scales(p);
@@ -49,7 +69,11 @@ std::optional<CurveEvent> curve_to_fold(const Problem& p, const Shooting& shooti
   CurveOptions grid = curve;
   after.clear();
   bool only_zero_short = false;
-  if (curve.max_depth_mm > 0.0) {
+  if (given) {
+    grid.depths_mm.clear();
+    for (const double d : curve.depths_mm) (d < fold_mm ? grid.depths_mm : after).push_back(d);
+    if (after.empty()) return std::nullopt;  // failed short of the fold
+  } else if (curve.max_depth_mm > 0.0) {
     if (!(curve.max_depth_mm > fold_mm)) return std::nullopt;  // failed short of the fold
     auto depth_at = [&](int k) {
       return k == n - 1 ? curve.max_depth_mm : curve.max_depth_mm * k / (n - 1);
@@ -72,15 +96,16 @@ std::optional<CurveEvent> curve_to_fold(const Problem& p, const Shooting& shooti
   StageBoundary slip;  // under a held pressure the membrane slides from the first touch
   slip.status = Status::Converged;
   slip.first_stage = Stage::Slip;
-  if (!follow_curve(p,
-                    shooting,
-                    options.curve_tol,
-                    slip,
-                    grid.max_depth_mm,
-                    false,
-                    std::nullopt,
-                    grid,
-                    to_fold))
+  const bool none_short = given && grid.depths_mm.empty();
+  if (!none_short && !follow_curve(p,
+                                   shooting,
+                                   options.curve_tol,
+                                   slip,
+                                   grid.max_depth_mm,
+                                   false,
+                                   std::nullopt,
+                                   grid,
+                                   to_fold))
     return std::nullopt;
   const auto& contact = shooting.contact();
   if (only_zero_short) to_fold.points.resize(1);
@@ -90,13 +115,10 @@ std::optional<CurveEvent> curve_to_fold(const Problem& p, const Shooting& shooti
   for (std::size_t i = branch->fold_index; i < branch->states.size(); ++i)
     out.beyond_fold.push_back(curve_point_of(
         p, contact, branch->states[i], Stage::Slip, branch->states[i].depth * units.length_mm));
-  CurveEvent e;
-  e.kind = CurveEventKind::SnapThrough;
-  e.depth_mm = fold_mm;
-  e.force_n = branch->fold.state.f * units.force_n;
-  e.contact_reach_mm = contact_reach_mm(out.points.back());
-  e.depth_uncertainty_mm = branch->fold.depth_uncertainty * units.length_mm;
-  return e;
+  fold_work.reset();
+  if (options.energy_to_puncture)
+    fold_work = work_to_fold_mj(p, shooting, options.curve_tol, *branch);
+  return snap_event_at_fold(p, shooting, *branch);
 }
 
 }  // namespace puncture::detail

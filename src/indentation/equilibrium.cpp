@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "indentation/depth_solve.hpp"
 #include "indentation/dispatch.hpp"
 #include "indentation/partial_slip_path.hpp"
 #include "indentation/partial_slip_puncture.hpp"
@@ -66,20 +67,26 @@ std::optional<ScaledSolution> direct_puncture(const Problem& problem,
   });
 }
 
-// The path's state at a depth between a `coulomb` release and the hand-over to the sliding
-// model (partial_slip_path.hpp), as the loading curve's, with its fields when `options` records
-// them; empty elsewhere.
+namespace {
+
+// The partial-slip family of a `coulomb` problem after its release (partial_slip_path.hpp),
+// built on `shooting` after locating the switch; empty for other rules or without a release.
 template <class Shooting>
-std::optional<Equilibrium> partial_slip_at_depth(const Problem& p, const Shooting& shooting,
-                                                 double depth_mm, const SolverOptions& options) {
+std::optional<PartialSlipSegment> coulomb_partial_slip(const Problem& p, const Shooting& shooting) {
   if (p.stick.rule != StickRule::Coulomb) return std::nullopt;
   const auto switch_point = locate_switch(p, shooting);
   const StageBoundary& b = switch_point.boundary;
   if (b.status != Status::Converged || !b.switches) return std::nullopt;
-  const auto segment = partial_slip_segment(p, shooting, b);
-  if (!segment || !segment->covers(depth_mm) || depth_mm < segment->first_depth_mm)
-    return std::nullopt;
-  auto found = segment->detail_at_depth(depth_mm, options.record_fields);
+  return partial_slip_segment(p, shooting, b);
+}
+
+// The path's state at a depth between a `coulomb` release and the hand-over to the sliding
+// model, the family's (as the loading curve's), with its fields when `options` records them;
+// empty elsewhere.
+std::optional<Equilibrium> partial_slip_state(const Problem& p, const PartialSlipSegment& segment,
+                                              double depth_mm, const SolverOptions& options) {
+  if (!segment.covers(depth_mm) || depth_mm < segment.first_depth_mm) return std::nullopt;
+  auto found = segment.detail_at_depth(depth_mm, options.record_fields);
   if (!found) {
     Equilibrium e;
     e.stage = Stage::Slip;
@@ -90,7 +97,58 @@ std::optional<Equilibrium> partial_slip_at_depth(const Problem& p, const Shootin
     return e;
   }
   found->point.depth_mm = depth_mm;  // the family's depth, to its search's 1e-13
-  return partial_slip_equilibrium(p, *segment, std::move(*found));
+  return partial_slip_equilibrium(p, segment, std::move(*found));
+}
+
+template <class Shooting>
+std::optional<Equilibrium> partial_slip_at_depth(const Problem& p, const Shooting& shooting,
+                                                 double depth_mm, const SolverOptions& options) {
+  const auto segment = coulomb_partial_slip(p, shooting);
+  if (!segment) return std::nullopt;
+  return partial_slip_state(p, *segment, depth_mm, options);
+}
+
+// solve_at_depth's state outside the family (the caller's): on a fresh shooting, the switch
+// located first in the slip stage as solve_at_depth does (its solves leave the contact model's
+// warm starts as there), then the depth's own solve.
+Equilibrium state_at_depth_beside_family(const Problem& p, double depth_mm, Stage stage,
+                                         const SolverOptions& options) {
+  const double d = depth_mm / solver_scales(p).length_mm;
+  return reporting_failures<Equilibrium>([&] {
+    return with_shooting(p, options, [&](const auto& shooting) {
+      if (stage == Stage::Slip) (void)locate_switch(p, shooting);
+      return to_physical(p, shooting.contact(), shooting.solve_at_depth(stage, d), stage, options);
+    });
+  });
+}
+
+}  // namespace
+
+void with_depth_solve(const Problem& p, const SolverOptions& options,
+                      const std::function<void(const DepthSolve&)>& use) {
+  // Under a gas pressure each depth is solved on its own (solve_at_depth: the same states).
+  if (p.stick.rule != StickRule::Coulomb || p.preload.gas_volume_mm3 ||
+      p.preload.pressure_mpa > 0.0) {
+    use([&](double depth_mm, Stage stage) { return solve_at_depth(p, depth_mm, stage, options); });
+    return;
+  }
+  with_shooting(p, options, [&](const auto& shooting) {
+    std::optional<PartialSlipSegment> family;
+    bool built = true;
+    try {
+      family = coulomb_partial_slip(p, shooting);
+    } catch (const std::exception&) {  // then each depth's own solve_at_depth says why
+      built = false;
+    }
+    use([&](double depth_mm, Stage stage) -> Equilibrium {
+      if (!built) return solve_at_depth(p, depth_mm, stage, options);
+      if (stage == Stage::Slip && family && family->covers(depth_mm) &&
+          depth_mm >= family->first_depth_mm)
+        return reporting_failures<Equilibrium>(
+            [&] { return *partial_slip_state(p, *family, depth_mm, options); });
+      return state_at_depth_beside_family(p, depth_mm, stage, options);
+    });
+  });
 }
 
 }  // namespace detail

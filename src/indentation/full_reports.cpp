@@ -309,11 +309,27 @@ std::string full_report(const PuncturePrediction& p) {
        "puncture force",
        fmt::format("{} N (F / 2 pi G H A = {})", num(p.force_n), num(p.normalized_force)));
   line(out, "puncture depth", num(p.depth_mm) + " mm");
+  if (const auto& snap = p.snap_through)
+    line(out,
+         "snap-through (depth)",
+         fmt::format("on the way, under depth control (the loading curve's), at {} mm: the force "
+                     "drops from {} N to {} N, onto the first inflated state{}; the puncture is "
+                     "on that state (under force control the path passes the fold)",
+                     num(snap->depth_mm),
+                     num(snap->force_n),
+                     num(snap->force_after_n.value_or(0.0)),
+                     snap->end_depth_mm ? fmt::format(" (the probe leaves the membrane and "
+                                                      "touches it again at {} mm)",
+                                                      num(*snap->end_depth_mm))
+                                        : std::string()));
   if (p.state.gas) line(out, "chamber gas", gas_text(*p.state.gas));
   if (p.energy_to_puncture_mj)
     line(out,
          "energy to puncture",
-         num(*p.energy_to_puncture_mj) + " mJ (the area under the force-depth curve)");
+         num(*p.energy_to_puncture_mj) +
+             (p.snap_through ? " mJ (the area under the force-depth curve depth control "
+                               "follows: the drop at the snap-through adds nothing)"
+                             : " mJ (the area under the force-depth curve)"));
   else if (!p.message.empty())
     line(out, "note", p.message);
   line(out, "stage", to_string(p.stage));

@@ -10,6 +10,7 @@
 #include "indentation/curve_events.hpp"
 #include "indentation/curve_following.hpp"
 #include "indentation/curve_to_fold.hpp"
+#include "indentation/depth_solve.hpp"
 #include "indentation/dispatch.hpp"
 #include "indentation/face_slip.hpp"
 #include "indentation/path_puncture.hpp"
@@ -73,14 +74,16 @@ std::optional<double> face_outward_from(const Problem& p, const std::vector<Curv
 void add_events(const Problem& p, const CurveOptions& curve, const SolverOptions& options,
                 LoadingCurve& out) {
   if (!out.ok() || !curve.locate_events) return;
-  const SolverOptions quiet = without_fields(options);
-  const detail::DepthSampler at_depth = [&](double depth_mm,
-                                            Stage stage) -> std::optional<detail::DepthSample> {
-    const Equilibrium e = solve_at_depth(p, depth_mm, stage, quiet);
-    if (!e.ok()) return std::nullopt;
-    return detail::DepthSample{e.force_n, e.contact_edge_radius_mm + e.contact_edge_height_mm};
-  };
-  out.events = detail::located_curve_events(out.points, at_depth);
+  // (Under the coulomb rule the partial-slip family is built once for all the samples.)
+  detail::with_depth_solve(p, without_fields(options), [&](const detail::DepthSolve& solve) {
+    const detail::DepthSampler at_depth = [&](double depth_mm,
+                                              Stage stage) -> std::optional<detail::DepthSample> {
+      const Equilibrium e = solve(depth_mm, stage);
+      if (!e.ok()) return std::nullopt;
+      return detail::DepthSample{e.force_n, e.contact_edge_radius_mm + e.contact_edge_height_mm};
+    };
+    out.events = detail::located_curve_events(out.points, at_depth);
+  });
   out.failure_verdict = detail::failure_verdict(p, out);
 }
 
@@ -121,6 +124,37 @@ PuncturePrediction puncture_on_path(const Problem& p, const SolverOptions& optio
   });
 }
 
+// A later inflated state whose path folds before any puncture (the puncture search's
+// limit_load there): the puncture under depth control, as the loading curve's, the first
+// state's after the snap-through (snap_landing.hpp); empty where the path has no fold.
+std::optional<PuncturePrediction> puncture_past_fold(const Problem& p,
+                                                     const SolverOptions& options) {
+  std::optional<CurveEvent> snap;
+  std::optional<double> fold_work;  // the work to the fold [mJ], when asked
+  with_shooting(p, without_fields(options), [&](const auto& shooting) {
+    const auto branch = fold_of_depth_path(shooting);
+    if (!branch) return;
+    snap = snap_event_at_fold(p, shooting, *branch);
+    if (options.energy_to_puncture)
+      fold_work = work_to_fold_mj(p, shooting, options.curve_tol, *branch);
+  });
+  if (!snap) return std::nullopt;
+  const SnapLanding landing = snap_landing(p, options, *snap);
+  PuncturePrediction out;
+  if (!landing.ok()) {
+    out.status = landing.status;
+    out.message = landing.message;
+    return out;
+  }
+  Problem first = p;
+  first.preload.inflated_state = 1;
+  SolverOptions alone = options;
+  alone.failure_verdict = false;  // the later state's verdict is its own curve's
+  out = predict_puncture(first, alone);
+  puncture_past_snap(landing, *snap, fold_work, out);
+  return out;
+}
+
 }  // namespace detail
 
 namespace {
@@ -157,6 +191,11 @@ PuncturePrediction predict_puncture(const Problem& p, const SolverOptions& optio
           : with_face_slip_checked(p, detail::reporting_failures<PuncturePrediction>([&] {
                                      return detail::sealed_puncture(p, options);
                                    }));
+  if (out.status == Status::LimitLoad && !p.preload.gas_volume_mm3 && p.preload.inflated_state != 1)
+    out = detail::reporting_failures<PuncturePrediction>([&] {
+      auto past = detail::puncture_past_fold(p, options);
+      return past ? std::move(*past) : out;
+    });
   add_failure_verdict(p, options, out);
   return out;
 }
@@ -188,13 +227,14 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
   return detail::reporting_failures<LoadingCurve>([&] {
     // Where a later inflated state's path turns back before the puncture: the snap-through.
     std::optional<CurveEvent> snap;
-    std::vector<double> after_snap;  // the curve's depths past it (to max_depth_mm)
+    std::vector<double> after_snap;   // the curve's depths past it (to max_depth_mm)
+    std::optional<double> fold_work;  // the work to the fold [mJ], when asked
     auto out = detail::with_shooting(p, without_fields(options), [&](const auto& shooting) {
       auto followed = detail::curve_to_puncture(p, shooting, curve, options);
       if (!followed.ok() && followed.puncture.status == Status::LimitLoad) {
         LoadingCurve to_fold;
         to_fold.puncture = followed.puncture;
-        snap = detail::curve_to_fold(p, shooting, curve, options, to_fold, after_snap);
+        snap = detail::curve_to_fold(p, shooting, curve, options, to_fold, after_snap, fold_work);
         if (snap) {
           to_fold.status = Status::Converged;
           return to_fold;
@@ -207,7 +247,7 @@ LoadingCurve loading_curve(const Problem& p, const CurveOptions& curve,
     add_events(p, curve, options, out);
     if (snap) {
       out.events.push_back(*snap);
-      detail::land_after_snap(p, curve, options, after_snap, out);
+      detail::land_after_snap(p, curve, options, after_snap, fold_work, out);
     }
     return out;
   });

@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-#include "indentation/curve_point_of.hpp"
+#include "indentation/curve_point_from_equilibrium.hpp"
 #include "indentation/enclosed_volume.hpp"
 #include "indentation/inflated_dome.hpp"
 #include "indentation/path_puncture.hpp"
@@ -406,7 +406,7 @@ LoadingCurve sealed_loading_curve(const Problem& p, const CurveOptions& curve,
       return out;
     }
     pressure = e.gas->pressure_mpa;
-    CurvePoint pt = curve_point_of(e, depth);
+    CurvePoint pt = curve_point_from_equilibrium(e, depth);
     pt.beyond_puncture =
         e.beyond_puncture || (out.puncture.ok() && depth > out.puncture.depth_mm * (1.0 + 1e-9));
     pt.gas = e.gas;

@@ -6,7 +6,7 @@
 
 namespace puncture::detail {
 
-inline CurvePoint curve_point_of(const Equilibrium& e, double depth_mm) {
+inline CurvePoint curve_point_from_equilibrium(const Equilibrium& e, double depth_mm) {
   CurvePoint pt;
   pt.depth_mm = depth_mm;
   pt.force_n = e.force_n;
