@@ -541,6 +541,28 @@ TEST(SphereTipped, EquatorOnsetFarFromTheLastOnesIsTheBracketedOne) {
   record("equator_onset_stretch_far_secant_vs_bracketed", worst_stretch);
 }
 
+// The change onto the cylinder side (slip_change) from the bracket that earlier plans met (the
+// puncture's search solves at forces on both sides of it: the side indicator negative at 0.05,
+// positive at 0.15) is the root the search from a small force finds on a fresh model.  Each
+// closes its bracket to 4 ulps of f; the indicator carries the equator onset's tolerance (1e-12
+// in the pole stretch, amplified by its slope in f): 1e-11 relative in f.
+TEST(SphereTipped, SideChangeFromThePlansBracketIsTheSearchedOne) {
+  const Problem p = sphere_problem();
+  const SolverOptions o;
+  const auto fresh = make_shooting(p, o);
+  const auto searched = fresh.contact().slip_change(fresh);
+  const auto planned = make_shooting(p, o);
+  for (const double f : {0.05, 0.15}) ASSERT_TRUE(planned.solve(Stage::Slip, f).ok()) << f;
+  const auto bracketed = planned.contact().slip_change(planned);
+  ASSERT_TRUE(searched && bracketed);
+  EXPECT_NEAR(bracketed->f, searched->f, 1e-11 * searched->f);
+  EXPECT_NEAR(bracketed->depth, searched->depth, 1e-10 * searched->depth);
+  EXPECT_GT(searched->f, 0.05);
+  EXPECT_LT(searched->f, 0.15);
+  record("side_change_bracketed_vs_searched_force",
+         std::abs(bracketed->f - searched->f) / searched->f);
+}
+
 // The 200-point curve's second point (0.3077 mm, #17) from its predictor's start, 0.6 % off in f
 // and 1 % in p - 1: there the pair is so ill-conditioned (det J ~ 0.2 % of its terms'
 // products) that Newton's first step went 60 % too far in f, and the curve fell back on force
