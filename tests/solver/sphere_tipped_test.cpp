@@ -596,8 +596,8 @@ TEST(SphereTipped, ValleyStartSolvesTheCurvesSecondPointFromItsPredictor) {
 // the same curve at 1e-11: the points' depths are the grid's (the puncture's the same to 1e-12),
 // and the forces agree to the curve's own accuracy: its Newton stops at relative residuals of
 // 1e-9, d ln F / d ln depth ~ 3 amplifies that, and the first points end on the evaluations'
-// noise (up to 1e-7 relative residuals, kNoiseLimitedResidual): 9.2e-9 at the first point,
-// below 1e-9 at half of them.
+// noise (up to 1e-7 relative residuals, kNoiseLimitedResidual): 3.2e-8 at the first point (the
+// first three bounded by 3e-7, the rest by 2e-8), below 1e-9 at half of them.
 TEST(SphereTipped, TwoHundredPointCurveMatchesATightCurve) {
   const Problem p = sphere_problem();
   CurveOptions curve;
@@ -621,7 +621,9 @@ TEST(SphereTipped, TwoHundredPointCurveMatchesATightCurve) {
       continue;
     }
     relative.push_back(std::abs(a.force_n - b.force_n) / b.force_n);
-    EXPECT_LE(relative.back(), 2e-8) << k;
+    // The first points may end on the noise: their depth residual within the guard's
+    // kNoiseLimitedResidual x 1e-9 = 1e-7, the force within ~3 times that (F ~ depth^3).
+    EXPECT_LE(relative.back(), k <= 3 ? 3e-7 : 2e-8) << k;
   }
   std::sort(relative.begin(), relative.end());
   const double median = relative[relative.size() / 2];

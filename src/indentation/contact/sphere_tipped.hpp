@@ -1095,6 +1095,11 @@ class SphereTippedContact {
     const ForceOnset& near = std::abs(f - a.f) <= std::abs(f - b.f) ? a : b;
     if (!(std::abs(f - near.f) <= kOnsetSecantReach * f))
       return pressure_ == 0.0 ? onset_by_power_law(f) : std::nullopt;
+    // A force within kOnsetLinearReach of an onset whose slope the secant measured (the depth
+    // Newton's next iterate at a point): from that onset along that slope, ~1e-14 off.
+    if (near.dv_dl > 0.0 && std::abs(f - near.f) <= kOnsetLinearReach * f)
+      return onset_secant_steps(
+          f, near.onset.stretch + (f - near.f) / near.dv_dl, 1.0 / near.dv_dl, kOnsetSecantSteps);
     // The start: Lambda_e through the nearest onset and the trail of onsets at distinct forces
     // (one per curve point), a polynomial in log f (Newton's divided differences), and its slope.
     // Near locking Lambda_e(f) bends sharply: through three onsets a point's first start was
@@ -1166,7 +1171,7 @@ class SphereTippedContact {
         if (s > 0.0 && std::isfinite(s)) slope = s;
       }
       const double step = -g / slope;
-      if (std::abs(step) <= kOnsetStretchTol * l) return kept_onset(f, std::move(onset));
+      if (std::abs(step) <= kOnsetStretchTol * l) return kept_onset(f, std::move(onset), slope);
       l_prev = l;
       g_prev = g;
       l += step;
@@ -1181,6 +1186,7 @@ class SphereTippedContact {
   static constexpr int kOnsetSecantSteps = 6;
   static constexpr int kOnsetFarSteps = 10;
   static constexpr double kOnsetSecantReach = 0.2;
+  static constexpr double kOnsetLinearReach = 1e-6;
   static constexpr double kOnsetStretchTol = 1e-12;
   static constexpr std::size_t kTrailLength = 5;
   static constexpr double kTrailSpacing = 1e-4;
@@ -1199,7 +1205,8 @@ class SphereTippedContact {
   // the equator stays below f at every stretch), while a true root meets it to the
   // integration's accuracy (absolute, at the tiny forces where V at the equator crosses zero: an
   // unstretched pole leaves the cap in hoop compression towards the equator).
-  std::optional<EquatorOnset> kept_onset(double f, std::optional<EquatorOnset> candidate) const {
+  std::optional<EquatorOnset> kept_onset(double f, std::optional<EquatorOnset> candidate,
+                                         double dv_dl = 0.0) const {
     // A root must carry f at the equator (the bracketing may end where the march fails, e.g. a
     // law without locking whose V at the equator stays below f at every stretch): short of f
     // there, by as little as f exceeds V's bound (1e-3 relative let a neo-Hookean force 2e-5
@@ -1211,7 +1218,7 @@ class SphereTippedContact {
       return std::nullopt;
     onsets_[2] = std::move(onsets_[1]);
     onsets_[1] = std::move(onsets_[0]);
-    onsets_[0] = ForceOnset{f, std::move(*candidate)};
+    onsets_[0] = ForceOnset{f, std::move(*candidate), dv_dl};
     if (onset_trail_.empty() || std::abs(onset_trail_.back().first - f) > kTrailSpacing * f) {
       onset_trail_.emplace_back(f, onsets_[0]->onset.stretch);
       if (onset_trail_.size() > kTrailLength) onset_trail_.pop_front();
@@ -1680,6 +1687,7 @@ class SphereTippedContact {
   struct ForceOnset {
     double f;
     EquatorOnset onset;
+    double dv_dl = 0.0;  // dV/dLambda there, as the secant steps that found it measured it (or 0)
   };
   mutable std::array<std::optional<ForceOnset>, 3> onsets_;
   // (force, onset stretch) of the last onsets at distinct forces, the oldest first.
