@@ -17,6 +17,7 @@
 #include "indentation/contact/partial_slip.hpp"
 #include "indentation/partial_slip_fields.hpp"
 #include "indentation/solver_scales.hpp"
+#include "numerics/root_in_bracket.hpp"
 #include "puncture/loading_curve.hpp"
 
 namespace puncture::detail {
@@ -245,15 +246,7 @@ class PartialSlipPath {
       const double lo = k == 0 ? kLast : 0.1 * k, g_lo = excess(lo);
       if (!std::isfinite(g_lo)) return std::nullopt;
       if (g_lo >= 0.0) {
-        std::uintmax_t iterations = 100;
-        const auto root = boost::math::tools::toms748_solve(
-            excess,
-            lo,
-            hi,
-            g_lo,
-            g_hi,
-            [](double a, double b) { return std::abs(b - a) <= 1e-13; },
-            iterations);
+        const auto root = bracket_to_width(excess, lo, hi, g_lo, g_hi, 1e-13);
         return at_front(root.first, release);  // the inner end: past the critical value
       }
       hi = lo;

@@ -17,6 +17,22 @@ double root_in_bracket(G&& g, double a, double b, double g_a, double g_b) {
   return 0.5 * (bracket.first + bracket.second);
 }
 
+// The bracket [lo, hi] of g's root (g(lo) = g_lo, g(hi) = g_hi of opposite signs, lo < hi) closed
+// by TOMS 748 to an absolute width `width`, at most 100 evaluations.
+template <class G>
+std::pair<double, double> bracket_to_width(G&& g, double lo, double hi, double g_lo, double g_hi,
+                                           double width) {
+  std::uintmax_t iterations = 100;
+  return boost::math::tools::toms748_solve(
+      g,
+      lo,
+      hi,
+      g_lo,
+      g_hi,
+      [width](double a, double b) { return std::abs(b - a) <= width; },
+      iterations);
+}
+
 // Closes a sign change of g(p) between lo and hi (either order) on a gas pressure p, to 1e-12 of
 // the absolute pressure p + p_atm: below what an enclosed volume's ~1e-10 lets a gas law resolve.
 // TOMS 748, at most 40 evaluations; g keeps its own best trial, so the bracket is not returned.

@@ -27,6 +27,7 @@
 #include <optional>
 
 #include "indentation/contact/profile_stick.hpp"
+#include "numerics/root_in_bracket.hpp"
 
 namespace puncture::detail {
 
@@ -200,15 +201,7 @@ class PartialSlip {
     const double hi = kReleaseFront, lo = kPoleFront;
     const double g_hi = depth_gap(hi), g_lo = depth_gap(lo);
     if (!(g_hi < 0.0) || !(g_lo > 0.0)) return std::nullopt;
-    std::uintmax_t iterations = 100;
-    const auto root = boost::math::tools::toms748_solve(
-        depth_gap,
-        lo,
-        hi,
-        g_lo,
-        g_hi,
-        [](double a, double b) { return std::abs(b - a) <= 1e-13; },
-        iterations);
+    const auto root = bracket_to_width(depth_gap, lo, hi, g_lo, g_hi, 1e-13);
     return at(0.5 * (root.first + root.second));
   }
 
