@@ -63,7 +63,7 @@ class DepthNewton {
   // ill-conditioned (det J ~ 0.2 % of its terms' products at the curve's second point) that
   // a start 1 % off in p - 1 lies outside Newton's basin (its first step went 60 % too far in
   // f), while the states with the clamp condition met form a valley along which it converges:
-  // the curve's second and third points took 107 and 99 marches of the cap through the
+  // the curve's second and third points took 114 and 99 marches of the cap through the
   // fallback's force searches, now 24 and 13 (bench/README.md).
   void valley_start() { valley_ = true; }
 
