@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "indentation/depth_newton.hpp"
+#include "indentation/nested_depth_solve.hpp"
 #include "indentation/partial_slip_path.hpp"
 #include "indentation/puncture_search.hpp"
 #include "indentation/solver_scales.hpp"
@@ -173,6 +174,17 @@ bool follow_curve(const Problem& p, const Shooting& shooting, double curve_tol,
         // the last point's, takes the depth instead.
         DepthNewton<Shooting> contact_newton(shooting, curve_tol, false, DepthControl::Contact);
         sol = contact_newton.solve(c, d, *last_contact_q, guess[1]);
+      }
+      if (!sol && sped_up && predictor.history.size() == 1) {
+        // The segment's first point from its seed: along the valley of states meeting the
+        // clamp condition (nested_depth_solve.hpp), where Newton's start lies outside its basin.
+        // Its parameter from the seed's with p - p0 ~ f^(1/2), the sphere's near zero load (the
+        // predictor's d^2 in depth put it below the branch point).
+        const auto& seed = predictor.history.front();
+        const double floor = shooting.parameter_floor(c);
+        const double p_start = floor + (seed[2] - floor) * std::sqrt(guess[0] / seed[1]);
+        NestedDepthSolve<Shooting> nested(shooting, curve_tol, kNoiseLimitedResidual * curve_tol);
+        sol = nested.solve(c, d, guess[0], p_start);
       }
     }
     if (!sol) {
