@@ -10,6 +10,7 @@
 // valley's floor the depth is a smooth function of the force, d ~ f^(1/3): the secant on it
 // converges in a few steps, and each force's parameter starts from its neighbours'
 // (bench/README.md).
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -105,8 +106,15 @@ class NestedDepthSolve {
       return g;
     };
     const double scale = std::min(1.0, std::exp(v));
-    const auto root =
-        root_above_branch(residual, v, 0.5, kLogProbe, tol_ * scale, kInnerEvaluations, slope_);
+    BranchRootSearch search;
+    search.up_step = 0.5;
+    search.probe = kLogProbe;
+    // (Residuals below the integration's absolute tolerance are its noise: IndentationShooting::
+    // above_branch.)
+    search.tol = std::max(tol_ * scale, solver_.settings().integration.abs_tol);
+    search.max_evaluations = kInnerEvaluations;
+    search.slope = slope_;
+    const auto root = root_above_branch(residual, v, search);
     if (!root || !(std::abs(root->g) <= noise_tol_ * scale)) return std::nullopt;
     // The next force's search starts with this slope (its first step lands next to the root).
     if (root->slope > 0.0) slope_ = root->slope;

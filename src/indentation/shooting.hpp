@@ -14,6 +14,7 @@
 #include "indentation/depth_newton.hpp"
 #include "indentation/depth_path_puncture.hpp"
 #include "indentation/free_part.hpp"
+#include "numerics/root_above_branch.hpp"
 #include "numerics/shooting.hpp"
 
 namespace puncture::detail {
@@ -73,6 +74,7 @@ class IndentationShooting {
     }
     auto fine = [&](double p) { return counted(plan.configuration, p); };
     std::optional<double> root = coarse_then_fine(plan, f, fine, evals, rough);
+    if (!root && plan.branch_below) root = above_branch(plan, f, fine);
     if (!root)
       root = shoot_increasing(fine,
                               plan.lo,
@@ -463,6 +465,31 @@ class IndentationShooting {
         fine, coarse, *p_coarse, scale, plan.lo, hi, good_enough(f), 1e-2, kPolishSteps);
   }
   static constexpr int kPolishSteps = 4;
+
+  // The root of a plan whose bracket starts at a turned-back stand-in (ShootingPlan::
+  // branch_below), from its cap down; residuals that are the stand-in or missing (the cap did
+  // not carry the force) lie below the branch point.  Empty when that search fails: TOMS 748
+  // on the plan's bracket runs then.
+  template <class Fine>
+  std::optional<double> above_branch(const ShootingPlan& plan, double f, Fine& fine) const {
+    if (!plan.g_cap || !std::isfinite(plan.cap) || !(plan.cap > plan.lo)) return std::nullopt;
+    auto defined = [&](double p) -> std::optional<double> {
+      const std::optional<double> g = fine(p);
+      if (!g || *g == kTurnedBack) return std::nullopt;
+      return g;
+    };
+    BranchRootSearch search;
+    search.up_step = 0.5 * (plan.cap - plan.lo);
+    search.probe = 1e-5 * (plan.cap - plan.lo);
+    // Residuals below the integration's absolute tolerance are its noise (~1e-13 near zero
+    // load, where good_enough asks ~1e-15 and the bracket's last steps only met noise).
+    search.tol = std::max(good_enough(f), settings().integration.abs_tol);
+    search.max_evaluations = settings().max_iterations;
+    search.below = plan.lo;
+    const auto root = root_above_branch(defined, plan.cap, search);
+    if (!root) return std::nullopt;
+    return root->x;
+  }
 
   static ScaledSolution outside_domain(ScaledSolution sol) {
     sol.status = Status::BeyondLocking;

@@ -22,24 +22,35 @@ struct BranchRoot {
   int evaluations = 0;
 };
 
+// How root_above_branch searches.
+struct BranchRootSearch {
+  double up_step = 0.0;  // the first step up from an undefined start (then doubling)
+  double probe = 0.0;    // the forward difference's step for the first slope
+  double tol = 0.0;      // on |g|
+  int max_evaluations = 40;
+  std::optional<double> slope;  // dg/dx known near the root: the probe is spared
+  double below = -std::numeric_limits<double>::infinity();  // an x known to lie below the root
+};
+
 // From x0: while g is undefined, x grows by up_step, doubling; from the first defined value, a
 // step of Newton's method on g |g| (half Newton's on g from above, exact on a square root) with
-// the slope by a forward difference of `probe`, then inverse quadratic interpolation through the
-// last three defined values (the secant through two), kept inside the bracket of the values met
-// (bisection otherwise).  The root is the first x with |g| <= tol, or, once the bracket is a few
-// ulps wide, the defined x with the smallest |g| met (the evaluations' noise).  Empty when no
-// defined value is met, the bracket does not close in max_evaluations, or g rises nowhere.
-// G: double -> std::optional<double> (empty: undefined, below the branch point).
+// the slope by a forward difference (or the known one), then inverse quadratic interpolation
+// through the last three defined values (the secant through two), kept inside the bracket of the
+// values met (bisection otherwise).  The root is the first x with |g| <= tol, or, once the
+// bracket is a few ulps wide, the defined x with the smallest |g| met (the evaluations' noise).
+// Empty when no defined value is met, the bracket does not close in max_evaluations, or g rises
+// nowhere.  G: double -> std::optional<double> (empty: undefined, below the branch point).
 template <class G>
-std::optional<BranchRoot> root_above_branch(G&& g, double x0, double up_step, double probe,
-                                            double tol, int max_evaluations,
-                                            std::optional<double> known_slope = std::nullopt) {
+std::optional<BranchRoot> root_above_branch(G&& g, double x0, const BranchRootSearch& search) {
+  const double up_step = search.up_step, probe = search.probe, tol = search.tol;
+  const int max_evaluations = search.max_evaluations;
+  const std::optional<double> known_slope = search.slope;
   struct Trial {
     double x, g;
   };
   constexpr double inf = std::numeric_limits<double>::infinity();
-  double lo = -inf, hi = inf;   // the largest x below the root and the smallest above it
-  std::array<Trial, 3> last{};  // the last defined values, newest first
+  double lo = search.below, hi = inf;  // the largest x below the root, the smallest above it
+  std::array<Trial, 3> last{};         // the last defined values, newest first
   int defined = 0, evaluations = 0;
   std::optional<Trial> best;
   auto at = [&](double x) -> std::optional<Trial> {
@@ -79,14 +90,14 @@ std::optional<BranchRoot> root_above_branch(G&& g, double x0, double up_step, do
   if (!(slope > 0.0) || !std::isfinite(slope)) return std::nullopt;
   double next = t->x - (t->g > 0.0 ? 0.5 : 1.0) * t->g / slope;
   double expand = std::max(std::abs(next - t->x), probe);  // outward while one side is unknown
-  // Interpolation that keeps one end of the bracket (a value next to the branch point, where g
-  // curves most) shrinks it slowly: a bracket not halved in two steps is bisected.
-  std::array<double, 2> widths{inf, inf};  // the bracket's width one and two steps ago
+  // Interpolation that stalls (on a value next to the branch point, where g curves most) is
+  // replaced by bisection: when the last defined value is not half the one two before it.
+  int since_bisection = 0;
   while (evaluations < max_evaluations) {
-    const double width = hi - lo;
-    if (std::isfinite(width) && width > 0.5 * widths[1]) next = inf;
-    widths = {width, widths[0]};
+    if (++since_bisection > 2 && defined == 3 && std::abs(last[0].g) > 0.5 * std::abs(last[2].g))
+      next = inf;
     if (!(next > lo && next < hi)) {
+      since_bisection = 0;
       if (std::isfinite(lo) && std::isfinite(hi))
         next = 0.5 * (lo + hi);
       else

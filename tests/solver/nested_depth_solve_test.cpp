@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
 
 #include "indentation/dispatch.hpp"
@@ -63,6 +64,33 @@ TEST(NestedDepthSolve, SolvesTheSphereCurvesFirstPointFromItsSeed) {
                        : "nested_first_point_from_below_evaluations",
            s->evaluations);
   }
+}
+
+// The curve's seed, the state at f = 1e-4: its plan's bracket starts at a turned-back stand-in
+// (branch_below), and the search down from the cap through defined residuals finds the root
+// bisection finds on the sign of the residual (stand-in included, to 4 ulps), to the residual's
+// noise over its slope (~1e-13 / 27 in p).
+TEST(NestedDepthSolve, SeedBelowAStandInMatchesBisection) {
+  const Problem p = nested_sphere_problem();
+  const SolverOptions o;
+  const auto shooting = nested_sphere_shooting(p, o);
+  const double f = 1e-4;
+  auto residual = [&](Configuration c, double q) { return shooting.residual(c, f, q); };
+  const auto plan = shooting.contact().plan(Stage::Slip, f, residual);
+  ASSERT_TRUE(plan.ok()) << plan.message;
+  EXPECT_TRUE(plan.branch_below);
+  const auto seed = shooting.solve(Stage::Slip, f);
+  ASSERT_TRUE(seed.ok()) << seed.message;
+  const auto sign = [&](double q) {
+    return shooting.residual(plan.configuration, f, q).value_or(-1.0);
+  };
+  const auto bracket = boost::math::tools::bisect(
+      sign, plan.lo, plan.cap, boost::math::tools::eps_tolerance<double>(50));
+  const double bisected = 0.5 * (bracket.first + bracket.second);
+  EXPECT_NEAR(seed.parameter, bisected, 1e-13);
+  EXPECT_LE(seed.evaluations, 20);
+  record("seed_branch_search_vs_bisection", std::abs(seed.parameter - bisected));
+  record("seed_branch_search_evaluations", seed.evaluations);
 }
 
 }  // namespace

@@ -39,8 +39,7 @@ TEST(RootAboveBranch, FindsTheRootNextToTheBranchPoint) {
   const SquareRootBranch g;
   const double tol = 1e-13;
   for (const double x0 : {1.03 * g.root(), 0.35 * g.root()}) {
-    const auto up_step = 0.5 * g.root();
-    const auto root = root_above_branch(g, x0, up_step, 1e-5 * g.root(), tol, 60);
+    const auto root = root_above_branch(g, x0, {0.5 * g.root(), 1e-5 * g.root(), tol, 60});
     ASSERT_TRUE(root) << x0;
     EXPECT_LE(std::abs(root->g), tol) << x0;
     EXPECT_NEAR(root->x, g.root(), 2.0 * tol / 83.0) << x0;
@@ -73,12 +72,12 @@ TEST(RootAboveBranch, FindsTheRootNextToTheBranchPoint) {
 // it meet the root; with a known slope the probe is spared.
 TEST(RootAboveBranch, ALineCostsAFewEvaluations) {
   const auto line = [](double x) -> std::optional<double> { return 2.0 * (x - 1.0); };
-  const auto root = root_above_branch(line, 1.5, 0.1, 1e-5, 1e-14, 40);
+  const auto root = root_above_branch(line, 1.5, {0.1, 1e-5, 1e-14, 40});
   ASSERT_TRUE(root);
   EXPECT_NEAR(root->x, 1.0, 1e-14);
   EXPECT_LE(root->evaluations, 5);
   EXPECT_NEAR(root->slope, 2.0, 1e-9);
-  const auto known = root_above_branch(line, 0.5, 0.1, 1e-5, 1e-14, 40, 2.0);
+  const auto known = root_above_branch(line, 0.5, {0.1, 1e-5, 1e-14, 40, 2.0});
   ASSERT_TRUE(known);
   EXPECT_NEAR(known->x, 1.0, 1e-14);
   EXPECT_LE(known->evaluations, 2);
@@ -87,9 +86,9 @@ TEST(RootAboveBranch, ALineCostsAFewEvaluations) {
 // Undefined everywhere it is asked within its budget, or a residual that does not rise: no root.
 TEST(RootAboveBranch, ReportsNoRootWhereThereIsNone) {
   const auto nowhere = [](double) -> std::optional<double> { return std::nullopt; };
-  EXPECT_FALSE(root_above_branch(nowhere, 0.0, 1.0, 1e-5, 1e-12, 30));
+  EXPECT_FALSE(root_above_branch(nowhere, 0.0, {1.0, 1e-5, 1e-12, 30}));
   const auto falling = [](double x) -> std::optional<double> { return 1.0 - x; };
-  EXPECT_FALSE(root_above_branch(falling, 0.0, 1.0, 1e-5, 1e-12, 30));
+  EXPECT_FALSE(root_above_branch(falling, 0.0, {1.0, 1e-5, 1e-12, 30}));
 }
 
 }  // namespace

@@ -82,6 +82,11 @@ struct ShootingPlan {
   std::optional<double> g_cap;  // the residual at the cap, when the plan has evaluated it
   double initial_step = 0.0;    // without a cap: the bracket's first step (0: 5% of lo)
   std::string no_root_message;  // what to say when the bracketing finds no root
+  // g_lo is the stand-in of a Part I turned back (kTurnedBack) below a square-root branch point
+  // the root lies just above, and g_cap is known: searched down from the cap through defined
+  // residuals only (numerics/root_above_branch.hpp), as TOMS 748 interpolates badly to the
+  // stand-in (the sphere-tipped probe near zero load).
+  bool branch_below = false;
   bool ok() const { return status == Status::Converged; }
 };
 

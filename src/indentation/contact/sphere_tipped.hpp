@@ -736,6 +736,7 @@ class SphereTippedContact {
     if (above && above->first > hi && above->first < plan.cap) {
       plan.cap = above->first;
       plan.g_cap = above->second;
+      plan.branch_below = g_hi == kTurnedBack;
     }
     plan.no_root_message =
         "sphere-tipped shooting found no pole stretch meeting the clamp condition";
