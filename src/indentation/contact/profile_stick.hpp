@@ -530,13 +530,16 @@ ShootingPlan held_profile_plan(const ProfileStickHistory<Law>& history, double f
       return plan;
     }
   }
-  if (const auto inside =
-          held_edge_inside_gas_load(history, f, p[std::min(k + 1, p.size() - 1)].r, counted)) {
-    plan.lo = 1.0 / inside->first;
-    plan.g_lo = inside->second;
-    plan.initial_step = 0.5 * plan.lo;
-    plan.no_root_message = no_root;
-    return plan;
+  // The gas alone carries f inside the grid point's edge: the edge lies further in.
+  const StuckPoint& grid = p[std::min(k + 1, p.size() - 1)];
+  if (!(history.gas_load(grid.theta, history.profile().on_cone(grid.theta)) < f)) {
+    if (const auto inside = held_edge_inside_gas_load(history, f, grid.r, counted)) {
+      plan.lo = 1.0 / inside->first;
+      plan.g_lo = inside->second;
+      plan.initial_step = 0.5 * plan.lo;
+      plan.no_root_message = no_root;
+      return plan;
+    }
   }
   // In the history's last interval the clamp residual at its last point is ~0 for a force within
   // rounding of that point's: the end of the history, not a solver failure.
