@@ -29,6 +29,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "indentation/contact/contact_model.hpp"
@@ -470,6 +471,31 @@ ShootingPlan held_profile_end_plan(const ProfileStickHistory<Law>& history) {
   return plan;
 }
 
+// Under a gas pressure a force far below the history's first grid point's (depths ~1e-5 mm past
+// the touch) has its edge well inside the grid point's edge r_grid, where the gas's resultant
+// P r^2 / 2 alone exceeds f: the membrane would pull with f - P r^2 / 2 <= 0 there and no Part I
+// leaves it (no residual at all, so the grid point bounds no bracket).  Near the touch the gas
+// carries a small fixed share of the edge's force (a pre-tension T at the inflated pole: the pull
+// 2 pi T c^2 (1 / rho - 1 / R_dome) against P c^2 / 2 = T c^2 / R_dome, ~1% on a 2 mm sphere),
+// so the edge lies where P r^2 / 2 is a small part of f.  Edges halved from r_grid, the first with
+// a positive pull and a negative clamp residual, bound the bracket: within a factor 2 of the
+// edge while the gas's share there is below 1/4.  {R, residual}; empty if an edge with a positive
+// residual comes first.
+template <class Law, class Residual>
+std::optional<std::pair<double, double>> held_edge_inside_gas_load(
+    const ProfileStickHistory<Law>& history, double f, double r_grid, Residual& counted) {
+  constexpr int kHalvings = 60;
+  for (int j = 1; j <= kHalvings; ++j) {
+    const double r = std::ldexp(r_grid, -j);
+    const auto psi = history.psi_at(r);
+    if (!psi || !(history.gas_load(*psi, history.profile().on_cone(*psi)) < f)) continue;
+    const auto g = counted(Configuration::Stick, 1.0 / r);
+    if (g && *g < 0.0) return std::pair{r, *g};
+    if (g) return std::nullopt;  // past the edge without a negative residual
+  }
+  return std::nullopt;
+}
+
 // The stick stage's plan at force f (as stuck_plan on the sphere): the parameter is 1 / R_c,
 // bracketed by the grid points around f; past the history's end a status.
 template <class Law, class Residual>
@@ -488,6 +514,8 @@ ShootingPlan held_profile_plan(const ProfileStickHistory<Law>& history, double f
   if (!(f < p.back().f)) return held_profile_end_plan(history);
   std::size_t k = 1;
   while (k + 1 < p.size() && !(p[k].f > f)) ++k;
+  const char* no_root =
+      "the stick stage on the probe found no contact edge meeting the clamp condition";
   for (const std::size_t hi : {std::min(k + 1, p.size() - 1), p.size() - 1}) {
     const auto g = counted(Configuration::Stick, 1.0 / p[hi].r);
     if (g && *g < 0.0) {
@@ -498,8 +526,18 @@ ShootingPlan held_profile_plan(const ProfileStickHistory<Law>& history, double f
         plan.cap = 1.0 / r_lo;
       else
         plan.initial_step = 0.5 * plan.lo;
-      plan.no_root_message =
-          "the stick stage on the probe found no contact edge meeting the clamp condition";
+      plan.no_root_message = no_root;
+      return plan;
+    }
+  }
+  // The gas alone carries f inside the grid point's edge: the edge lies further in.
+  const StuckPoint& grid = p[std::min(k + 1, p.size() - 1)];
+  if (!(history.gas_load(grid.theta, history.profile().on_cone(grid.theta)) < f)) {
+    if (const auto inside = held_edge_inside_gas_load(history, f, grid.r, counted)) {
+      plan.lo = 1.0 / inside->first;
+      plan.g_lo = inside->second;
+      plan.initial_step = 0.5 * plan.lo;
+      plan.no_root_message = no_root;
       return plan;
     }
   }
