@@ -596,8 +596,9 @@ TEST(SphereTipped, ValleyStartSolvesTheCurvesSecondPointFromItsPredictor) {
 // the same curve at 1e-11: the points' depths are the grid's (the puncture's the same to 1e-12),
 // and the forces agree to the curve's own accuracy: its Newton stops at relative residuals of
 // 1e-9, d ln F / d ln depth ~ 3 amplifies that, and the first points end on the evaluations'
-// noise (up to 1e-7 relative residuals, kNoiseLimitedResidual): 3.2e-8 at the first point (the
-// first three bounded by 3e-7, the rest by 2e-8), below 1e-9 at half of them.
+// noise (up to 1e-7 relative residuals, kNoiseLimitedResidual; the first point, solved along
+// the valley by the nested depth solve, within 3.4e-9) (the first three bounded by 3e-7, the rest
+// by 2e-8), below 1e-10 at half of them.
 TEST(SphereTipped, TwoHundredPointCurveMatchesATightCurve) {
   const Problem p = sphere_problem();
   CurveOptions curve;
