@@ -151,6 +151,7 @@ class PartialSlipPath {
     pt.part_three_stretch = history_.first_touch_stretch();  // the held pole keeps its stretch
     pt.contact_edge_radius_mm = q.radius(psi) * units_.length_mm;
     pt.contact_edge_height_mm = q.height(psi) * units_.length_mm;
+    pt.corner_slope_rad = q.slope(psi);  // Part I leaves the smooth profile tangentially
     pt.slip_front_reference_radius_mm = st.front * units_.length_mm;
     pt.slip_front_radius_mm = q.radius(*front_psi) * units_.length_mm;
     const auto i1 = largest_i1(st);

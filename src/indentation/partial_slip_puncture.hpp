@@ -38,6 +38,7 @@ inline Equilibrium partial_slip_equilibrium(const Problem& p, const PartialSlipS
   e.part_three_stretch = pt.part_three_stretch;
   e.contact_edge_radius_mm = pt.contact_edge_radius_mm;
   e.contact_edge_height_mm = pt.contact_edge_height_mm;
+  e.corner_slope_rad = pt.corner_slope_rad;
   e.slip_front_reference_radius_mm = pt.slip_front_reference_radius_mm;
   e.slip_front_radius_mm = pt.slip_front_radius_mm;
   e.max_first_invariant = pt.max_first_invariant;

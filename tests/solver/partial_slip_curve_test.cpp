@@ -117,6 +117,9 @@ TEST(PartialSlipCurve, PointsAreTheFamilysStatesAndContinuous) {
                   profile.radius(st->at_edge.psi) * units.length_mm,
                   1e-9 * q.contact_edge_radius_mm);
       EXPECT_EQ(q.part_three_stretch, kCurvePrestretch);  // the held pole
+      // Part I leaves the 2 mm sphere tangentially: sin(slope) = r_edge / a, from the edge's
+      // reported radius (not the profile's angle the point was built from) to its 1e-9.
+      EXPECT_NEAR(std::sin(q.corner_slope_rad), q.contact_edge_radius_mm / 2.0, 1e-9) << q.depth_mm;
       EXPECT_GT(q.max_first_invariant, 3.0);
       // solve_at_depth gives the curve's state.
       const Equilibrium e = solve_at_depth(s.problem, q.depth_mm, Stage::Slip);
@@ -124,6 +127,7 @@ TEST(PartialSlipCurve, PointsAreTheFamilysStatesAndContinuous) {
       EXPECT_EQ(e.configuration, Configuration::PartialSlip);
       EXPECT_NEAR(e.force_n, q.force_n, 1e-12 * q.force_n);
       EXPECT_NEAR(e.slip_front_radius_mm, q.slip_front_radius_mm, 1e-12);
+      EXPECT_EQ(e.corner_slope_rad, q.corner_slope_rad);
     }
     if (q.depth_mm > handover) {
       EXPECT_EQ(q.stage, Stage::Slip);
