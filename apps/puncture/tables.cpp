@@ -132,6 +132,15 @@ Table puncture_table(const PuncturePrediction& p) {
     t.columns.insert(t.columns.end(), {"gas_pressure_mpa", "gas_volume_mm3"});
     t.rows.front().insert(t.rows.front().end(), {gas->pressure_mpa, gas->volume_mm3});
   }
+  if (const auto& snap = p.snap_through) {
+    // The fold passed on the way under depth control (its depth, the force before and after,
+    // where the probe touches the landed state again; empty if it never left it).
+    t.columns.insert(
+        t.columns.end(),
+        {"snap_depth_mm", "snap_force_before_n", "snap_force_after_n", "snap_touches_again_at_mm"});
+    t.rows.front().insert(t.rows.front().end(),
+                          {snap->depth_mm, snap->force_n, snap->force_after_n, snap->end_depth_mm});
+  }
   return t;
 }
 
