@@ -23,28 +23,43 @@ using detail::ScaledSolution;
 // force f and pole strain e = p - 1, clamp residual e (ln(e / e0) - ln(f / f0) / 2) and depth
 // d0 (f / f0)^(1/3) (e / e0)^(-1/4), with the depth times (1 + noise * h), h in [-1, 1] a hash of
 // the bits of (f, p): noise that no smooth model has.
-struct NoisyModelShooting {
-  double noise = 0.0;
-  static constexpr double kE0 = 2.7e-4, kF0 = 1.4e-7, kD0 = 6.2e-3;
+// What the model shootings below share: the state of (f, p) with its clamp residual and depth,
+// integrated and judged converged; the parameter's floor 1; the contact's pair (q, p) as (q - p,
+// p).
+template <class Model>
+struct ModelShooting {
   double parameter_floor(Configuration) const { return 1.0; }
-  ScaledSolution assemble(Configuration c, double f, double p, bool, bool = true) const {
+  static ScaledSolution state(Configuration c, double f, double p, double residual, double depth) {
     ScaledSolution s;
     s.configuration = c;
     s.f = f;
     s.parameter = p;
+    s.residual = residual;
+    s.depth = depth;
+    s.integrated = std::isfinite(residual);
+    s.status = Status::Converged;
+    return s;
+  }
+  ScaledSolution assemble_at_contact(Configuration c, double q, double p, bool) const {
+    return static_cast<const Model&>(*this).assemble(c, q - p, p, false);
+  }
+};
+
+struct NoisyModelShooting : ModelShooting<NoisyModelShooting> {
+  explicit NoisyModelShooting(double noise_level) : noise(noise_level) {}
+  double noise = 0.0;
+  static constexpr double kE0 = 2.7e-4, kF0 = 1.4e-7, kD0 = 6.2e-3;
+  ScaledSolution assemble(Configuration c, double f, double p, bool, bool = true) const {
     const double e = p - 1.0;
     std::uint64_t h = std::bit_cast<std::uint64_t>(f) * 0x9E3779B97F4A7C15ULL ^
                       std::bit_cast<std::uint64_t>(p) * 0xC2B2AE3D27D4EB4FULL;
     h ^= h >> 29;
     const double unit = static_cast<double>(h % 2000001) / 1e6 - 1.0;  // in [-1, 1]
-    s.residual = e * (std::log(e / kE0) - 0.5 * std::log(f / kF0));
-    s.depth = kD0 * std::cbrt(f / kF0) * std::pow(e / kE0, -0.25) * (1.0 + noise * unit);
-    s.integrated = true;
-    s.status = Status::Converged;
-    return s;
-  }
-  ScaledSolution assemble_at_contact(Configuration c, double q, double p, bool) const {
-    return assemble(c, q - p, p, false);
+    return state(c,
+                 f,
+                 p,
+                 e * (std::log(e / kE0) - 0.5 * std::log(f / kF0)),
+                 kD0 * std::cbrt(f / kF0) * std::pow(e / kE0, -0.25) * (1.0 + noise * unit));
   }
 };
 
@@ -127,27 +142,19 @@ TEST(DepthNewtonNoise, ExtrapolatedJacobianReachesThePlainSolversStates) {
 // +0.11 to the turned-back stand-in over 1 % of p - 1): at force f and pole strain e, clamp
 // residual (e / e_c(f))^K - 1 with e_c = e0 (f / f0)^(1/2) and K = 100, and the depth of
 // NoisyModelShooting (noise-free).  The root: e = e_c(f), d = d0 (f / f0)^(5/24) as there.
-struct SteepClampShooting {
+struct SteepClampShooting : ModelShooting<SteepClampShooting> {
   static constexpr double kSteepness = 100.0, kTurnsBack = 0.99;
-  double parameter_floor(Configuration) const { return 1.0; }
   ScaledSolution assemble(Configuration c, double f, double p, bool, bool = true) const {
-    ScaledSolution s;
-    s.configuration = c;
-    s.f = f;
-    s.parameter = p;
     const double e = p - 1.0;
     const double e_c = NoisyModelShooting::kE0 * std::sqrt(f / NoisyModelShooting::kF0);
     // Judged relative to e, as the solver does: (e / e_c)^K - 1 times e.
     // Below 0.99 e_c the membrane turns back: the shooting's stand-in, -1 of the scale.
-    s.residual = e < kTurnsBack * e_c ? -e : e * std::expm1(kSteepness * std::log(e / e_c));
-    s.depth = NoisyModelShooting::kD0 * std::cbrt(f / NoisyModelShooting::kF0) *
-              std::pow(e / NoisyModelShooting::kE0, -0.25);
-    s.integrated = std::isfinite(s.residual);
-    s.status = Status::Converged;
-    return s;
-  }
-  ScaledSolution assemble_at_contact(Configuration c, double q, double p, bool) const {
-    return assemble(c, q - p, p, false);
+    return state(c,
+                 f,
+                 p,
+                 e < kTurnsBack * e_c ? -e : e * std::expm1(kSteepness * std::log(e / e_c)),
+                 NoisyModelShooting::kD0 * std::cbrt(f / NoisyModelShooting::kF0) *
+                     std::pow(e / NoisyModelShooting::kE0, -0.25));
   }
 };
 
