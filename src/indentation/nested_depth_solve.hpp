@@ -81,8 +81,6 @@ class NestedDepthSolve {
     return std::nullopt;
   }
 
-  int evaluations() const { return evaluations_; }
-
  private:
   static constexpr int kMaxForces = 12;
   static constexpr int kNoiseSteps = 2;

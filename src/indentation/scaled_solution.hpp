@@ -71,7 +71,6 @@ struct ScaledSolution {
   double residual = 0.0;       // lambda2 - L0 at the clamp
   int evaluations = 0;
   bool integrated = false;    // every part was integrated (residual and depth are defined)
-  bool turned_back = false;   // not integrated: Part I turned back towards the axis (too slack)
   double shooting_tol = 0.0;  // the clamp tolerance it was judged against
   // A failure to reach a depth that carries the deepest state the stage reaches (its fields
   // are that state's; the message says why no deeper state exists).

@@ -503,7 +503,6 @@ class IndentationShooting {
                      bool find_maximum = true) const {
     const auto run = part_one_.run(sol.f, st, record ? &sol.part_one : nullptr, find_maximum);
     if (!run.ok) {
-      sol.turned_back = run.turned_back;
       sol.message = run.turned_back ? "Part I turns back towards the axis before the clamp"
                                     : "Part I cannot be integrated to the clamp (material locks)";
       return false;

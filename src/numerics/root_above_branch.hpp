@@ -4,9 +4,9 @@
 // e possibly tiny against the distance of a start from it.  (The clamp residual of a membrane on
 // a smooth probe near zero load: below x_b Part I turns back towards the axis,
 // nested_depth_solve.hpp.)  Newton or the secant on g from above overshoot past x_b there, and
-// bracketing solvers fed a stand-in value below it interpolate badly (TOMS 748 took 22
-// evaluations on such a bracket); x is a quadratic in g on that model, so inverse quadratic
-// interpolation through three defined values is exact for it.
+// bracketing solvers fed a stand-in value below it interpolate badly (TOMS 748 took 28
+// evaluations on such a bracket at the sphere-tipped curve's seed); x is a quadratic in g on that
+// model, so inverse quadratic interpolation through three defined values is exact for it.
 #include <algorithm>
 #include <array>
 #include <cmath>
